@@ -1,0 +1,45 @@
+"""What every environment (kitchen, street, browser, geolocation world) offers an episode.
+
+An environment is owned by exactly one episode. Tools reach it only through
+``EpisodeManager.act`` so that the active-environment rule, the step limit and the
+trajectory record are enforced in one place.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, ClassVar, Literal
+
+from mcp.server.mcpserver.exceptions import ToolError
+
+
+class EnvError(ToolError):
+    """An action the environment refused. The message names the problem and how to fix it;
+    the environment's state is unchanged."""
+
+
+@dataclass
+class Observation:
+    text: str  # the short rendering the model reads
+    data: dict[str, Any] = field(default_factory=dict)  # the same, structured (JSON-serializable)
+    images: list[bytes] = field(default_factory=list)  # PNG bytes, sent as MCP image content
+
+
+class Environment:
+    """Base class; subclasses set ``kind`` and ``name`` and implement the async hooks."""
+
+    kind: ClassVar[Literal["web", "embodied"]]
+    name: ClassVar[str]
+
+    async def reset(self, task: Any, options: dict[str, Any]) -> None:  # task: taskmodel.Task
+        raise NotImplementedError
+
+    async def observe(self) -> Observation:
+        raise NotImplementedError
+
+    async def final_state(self) -> dict[str, Any]:
+        """A JSON-serializable snapshot that graders read from final_state.json."""
+        raise NotImplementedError
+
+    async def close(self) -> None:
+        return None

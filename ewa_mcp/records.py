@@ -1,0 +1,103 @@
+"""Run directories: what the grader reads, written step by step so a crash loses nothing.
+
+runs/<run_id>/<episode_id>/
+    task.json            the task as it was run (with its oracle and goals)
+    trajectory.jsonl     one line per tool call, appended and flushed immediately
+    web_events.jsonl     events the embedded sites emitted for this episode (page views, orders, ...)
+    final_state.json     written once, when the episode ends
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import threading
+import time
+from datetime import UTC, datetime
+from pathlib import Path
+from typing import Any
+
+DIGEST_CHARS = 240
+
+
+def _now_iso() -> str:
+    return datetime.now(UTC).isoformat(timespec="milliseconds")
+
+
+def digest(text: str) -> str:
+    """A one-line, bounded summary of an observation for the trajectory."""
+    flat = " ".join(text.split())
+    return flat if len(flat) <= DIGEST_CHARS else flat[: DIGEST_CHARS - 1] + "…"
+
+
+class EpisodeRecorder:
+    def __init__(self, directory: Path):
+        self.directory = directory
+        directory.mkdir(parents=True, exist_ok=True)
+        self._lock = threading.Lock()  # sites emit events from their own threads
+        self._trajectory = open(directory / "trajectory.jsonl", "a", encoding="utf-8")
+        self._events = open(directory / "web_events.jsonl", "a", encoding="utf-8")
+
+    def write_task(self, task_json: dict[str, Any]) -> None:
+        self._write_json("task.json", task_json)
+
+    def _append(self, fh, record: dict[str, Any]) -> None:
+        line = json.dumps(record, ensure_ascii=False, default=str)
+        with self._lock:
+            if fh.closed:
+                return
+            fh.write(line + "\n")
+            fh.flush()
+            os.fsync(fh.fileno())
+
+    def step(
+        self,
+        *,
+        index: int,
+        tool: str,
+        args: dict[str, Any],
+        ok: bool,
+        error: str | None,
+        duration_ms: float,
+        environment: str | None,
+        observation: str,
+        counted: bool,
+        extra: dict[str, Any] | None = None,
+    ) -> None:
+        record = {
+            "step": index,
+            "time": _now_iso(),
+            "t": time.time(),
+            "tool": tool,
+            "args": args,
+            "ok": ok,
+            "error": error,
+            "duration_ms": round(duration_ms, 3),
+            "environment": environment,
+            "counted": counted,
+            "observation": digest(observation),
+        }
+        if extra:
+            record.update(extra)
+        self._append(self._trajectory, record)
+
+    def event(self, event: dict[str, Any]) -> None:
+        self._append(self._events, {"time": _now_iso(), "t": time.time(), **event})
+
+    def write_final_state(self, state: dict[str, Any]) -> None:
+        self._write_json("final_state.json", state)
+
+    def _write_json(self, name: str, payload: dict[str, Any]) -> None:
+        # Write-then-rename: a reader never sees a half-written file.
+        tmp = self.directory / f".{name}.tmp"
+        tmp.write_text(json.dumps(payload, indent=2, ensure_ascii=False, default=str), encoding="utf-8")
+        os.replace(tmp, self.directory / name)
+
+    def close(self) -> None:
+        with self._lock:
+            self._trajectory.close()
+            self._events.close()
+
+
+def new_run_id() -> str:
+    return datetime.now(UTC).strftime("%Y%m%d-%H%M%S-") + os.urandom(3).hex()

@@ -1,0 +1,61 @@
+"""Builds the MCP server: one MCPServer, one EpisodeManager, the tool groups of the registry."""
+
+from __future__ import annotations
+
+import importlib
+import logging
+from collections.abc import AsyncIterator
+from contextlib import asynccontextmanager
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from mcp.server.mcpserver import MCPServer
+
+from . import __version__, registry
+from .episodes import EpisodeManager
+from .paths import runs_dir, tasks_dir
+from .records import new_run_id
+from .services import Services
+from .taskmodel import TaskStore
+
+log = logging.getLogger("ewa_mcp")
+
+INSTRUCTIONS = """\
+ewa-mcp: embodied web agent tasks. Protocol:
+1. list_tasks, then start_episode(task_id) -> an episode_id, the task intent and the first observation.
+2. Each episode has a web environment (browser_* tools) and/or an embodied one (kitchen_* or street_* tools).
+   Only the active one accepts actions; switch_environment(episode_id, target, message) changes it (it is a
+   recorded action, say why in message).
+3. Pass episode_id to every tool. get_observation shows the active environment again without acting.
+4. finish_episode(episode_id, answer) ends the episode (geolocation uses submit_location). Steps are limited.
+"""
+
+
+@dataclass
+class ServerConfig:
+    task_dirs: list[Path] | None = None
+    run_dir: Path | None = None  # the directory episodes are written under (one run)
+    services: dict[str, Any] | None = None  # config passed to shared services (ports, browser options)
+    environments: dict[str, Any] | None = None  # name -> class overrides (tests)
+
+
+def build_server(config: ServerConfig | None = None) -> tuple[MCPServer, EpisodeManager]:
+    config = config or ServerConfig()
+    tasks = TaskStore(config.task_dirs or [tasks_dir()])
+    run_dir = config.run_dir or (runs_dir() / new_run_id())
+    services = Services(config.services)
+    episodes = EpisodeManager(tasks, run_dir, services, config.environments)
+
+    @asynccontextmanager
+    async def lifespan(_: MCPServer) -> AsyncIterator[dict[str, Any]]:
+        try:
+            yield {"episodes": episodes}
+        finally:
+            await episodes.aclose()
+            await services.aclose()
+
+    mcp = MCPServer("ewa-mcp", instructions=INSTRUCTIONS, version=__version__, lifespan=lifespan)
+    for module_name in registry.TOOL_GROUPS:
+        importlib.import_module(module_name).register(mcp, episodes)
+    return mcp, episodes

@@ -1,0 +1,240 @@
+"""The task schema shared by the generator, the server and the graders.
+
+A task is a JSON document; its shape is versioned (``schema_version``) so that run
+directories written today can still be graded after the schema grows.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Annotated, Any, Literal
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
+
+SCHEMA_VERSION = 1
+
+Domain = Literal["cooking", "navigation", "shopping", "traveling", "geolocation", "demo"]
+EnvKind = Literal["web", "embodied"]
+
+
+class _Strict(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+
+# ---------------------------------------------------------------- start state
+class WebStart(_Strict):
+    # Site-relative URL such as "recipes:/" or "shop:/product/7"; the server maps site names
+    # to the loopback ports it serves them on, so tasks never hard-code a host.
+    start_url: str = "home:/"
+
+
+class KitchenStart(_Strict):
+    kind: Literal["kitchen"] = "kitchen"
+    scene: str = "FloorPlan1"
+    seed: int = 0
+
+
+class StreetStart(_Strict):
+    kind: Literal["street"] = "street"
+    city: str
+    node: str
+    heading: float = 0.0
+
+
+class GeoStart(_Strict):
+    kind: Literal["geo"] = "geo"
+    location_id: str
+    setting: Literal["baseline", "embodied"] = "embodied"
+
+
+EmbodiedStart = Annotated[KitchenStart | StreetStart | GeoStart, Field(discriminator="kind")]
+
+
+class StartState(_Strict):
+    environment: EnvKind = "web"
+    web: WebStart | None = None
+    embodied: EmbodiedStart | None = None
+
+
+# ---------------------------------------------------------------- goals
+class RecipeCompleted(_Strict):
+    """Web: the right recipe's last step was displayed."""
+
+    kind: Literal["recipe_completed"] = "recipe_completed"
+    recipe_id: str
+
+
+class OrderPlaced(_Strict):
+    """Web: an order exists with this product (and size, quantity, pickup store when given)."""
+
+    kind: Literal["order_placed"] = "order_placed"
+    product_id: str
+    size: str | None = None
+    quantity: int = 1
+    store_id: str | None = None
+
+
+class DirectionsShown(_Strict):
+    """Web: the map site showed walking directions between these two places."""
+
+    kind: Literal["directions_shown"] = "directions_shown"
+    origin: str
+    destination: str
+
+
+class PageVisited(_Strict):
+    """Web: a page of a site whose path starts with ``path_prefix`` was viewed."""
+
+    kind: Literal["page_visited"] = "page_visited"
+    site: str
+    path_prefix: str
+
+
+class ObjectState(_Strict):
+    """Embodied (kitchen): some object of exactly this type has ``state[prop] == value``.
+
+    Sliced or cracked pieces count for their source type (TomatoSliced for Tomato)."""
+
+    kind: Literal["object_state"] = "object_state"
+    object_type: str
+    prop: Literal["isSliced", "isCooked", "isBroken", "isToggled", "isOpen", "isPickedUp"]
+    value: bool = True
+
+
+class ObjectIn(_Strict):
+    """Embodied (kitchen): some object of this type (or a piece of it) is in/on this receptacle type."""
+
+    kind: Literal["object_in"] = "object_in"
+    object_type: str
+    receptacle_type: str
+    # When set, the object must also satisfy these states (e.g. cooked tomato slices on a plate).
+    with_state: dict[str, bool] = Field(default_factory=dict)
+
+
+class ReachedPlace(_Strict):
+    """Embodied (street): the agent stopped within ``radius_m`` of the target."""
+
+    kind: Literal["reached_place"] = "reached_place"
+    city: str
+    node: str
+    lat: float
+    lng: float
+    radius_m: float = 25.0
+    place_id: str | None = None
+    # Shopping: the store must be the pickup store of the order that matched the web goal.
+    must_match_order_store: bool = False
+
+
+WebGoal = Annotated[RecipeCompleted | OrderPlaced | DirectionsShown | PageVisited, Field(discriminator="kind")]
+EmbodiedGoal = Annotated[ObjectState | ObjectIn | ReachedPlace, Field(discriminator="kind")]
+
+
+# ---------------------------------------------------------------- answers
+class TextAnswer(_Strict):
+    kind: Literal["text"] = "text"
+    must_include: list[str] = Field(default_factory=list)
+    exact: str | None = None
+
+
+class GeoAnswer(_Strict):
+    kind: Literal["geolocation"] = "geolocation"
+    lat: float
+    lng: float
+    continent: str
+    country: str
+    city: str
+    street: str
+
+
+AnswerCheck = Annotated[TextAnswer | GeoAnswer, Field(discriminator="kind")]
+
+
+class ToolCall(_Strict):
+    """One step of an oracle solution: a tool name and its arguments (``episode_id`` is filled in)."""
+
+    tool: str
+    args: dict[str, Any] = Field(default_factory=dict)
+
+
+class Task(_Strict):
+    schema_version: int = SCHEMA_VERSION
+    id: str = Field(pattern=r"^[a-z0-9][a-z0-9_.\-]*$")
+    domain: Domain
+    intent: str
+    start: StartState = Field(default_factory=StartState)
+    web_goals: list[WebGoal] = Field(default_factory=list)
+    embodied_goals: list[EmbodiedGoal] = Field(default_factory=list)
+    answer: AnswerCheck | None = None
+    step_limit: int = Field(default=60, ge=1, le=10_000)
+    oracle: list[ToolCall] = Field(default_factory=list)
+    metadata: dict[str, Any] = Field(default_factory=dict)
+
+
+class TaskFileError(ValueError):
+    """A task file that cannot be loaded; the message names the file, the field and the fix."""
+
+
+def load_task_file(path: Path) -> list[Task]:
+    """A task file holds one task object or a list of them."""
+    try:
+        raw = json.loads(path.read_text(encoding="utf-8"))
+    except json.JSONDecodeError as exc:
+        raise TaskFileError(f"{path}: not valid JSON ({exc.msg} at line {exc.lineno}); fix the file's syntax") from exc
+    items = raw if isinstance(raw, list) else [raw]
+    tasks = []
+    for i, item in enumerate(items):
+        try:
+            tasks.append(Task.model_validate(item))
+        except ValidationError as exc:
+            where = f"{path}" + (f" item {i}" if isinstance(raw, list) else "")
+            problems = "; ".join(
+                f"{'.'.join(str(p) for p in e['loc']) or '<root>'}: {e['msg']}" for e in exc.errors()[:5]
+            )
+            raise TaskFileError(f"{where}: invalid task ({problems}); see docs/task.schema.json") from exc
+    return tasks
+
+
+class TaskStore:
+    """All tasks under one or more directories, indexed by id."""
+
+    def __init__(self, roots: list[Path]):
+        self.roots = roots
+        self._tasks: dict[str, Task] | None = None
+        self.errors: list[str] = []
+
+    def _load(self) -> dict[str, Task]:
+        if self._tasks is None:
+            tasks: dict[str, Task] = {}
+            for root in self.roots:
+                for path in sorted(root.rglob("*.json")):
+                    try:
+                        for task in load_task_file(path):
+                            if task.id in tasks:
+                                self.errors.append(f"{path}: duplicate task id {task.id!r}; ids must be unique")
+                                continue
+                            tasks[task.id] = task
+                    except TaskFileError as exc:
+                        # One bad file must not take the whole suite down; it is reported instead.
+                        self.errors.append(str(exc))
+            self._tasks = tasks
+        return self._tasks
+
+    def add(self, task: Task) -> None:
+        self._load()[task.id] = task
+
+    def get(self, task_id: str) -> Task | None:
+        return self._load().get(task_id)
+
+    def all(self, domain: str | None = None) -> list[Task]:
+        tasks = self._load().values()
+        return [t for t in tasks if domain is None or t.domain == domain]
+
+    def __len__(self) -> int:
+        return len(self._load())
+
+
+def export_json_schema() -> dict[str, Any]:
+    schema = Task.model_json_schema()
+    schema["$id"] = f"https://ewa-mcp.invalid/task.schema.v{SCHEMA_VERSION}.json"
+    return schema

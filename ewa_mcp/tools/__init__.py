@@ -1,0 +1,1 @@
+"""MCP tool groups: one module per group, each with ``register(mcp, episodes)``."""

@@ -1,0 +1,186 @@
+"""Episode lifecycle tools and resources: tasks, episodes, observation, switching, finishing."""
+
+from __future__ import annotations
+
+import json
+from typing import Annotated, Any, Literal
+
+from mcp.server.mcpserver import MCPServer
+from mcp.server.mcpserver.exceptions import ResourceError
+from mcp_types import CallToolResult
+from pydantic import BaseModel, Field
+
+from ..environment import Observation
+from ..episodes import EpisodeError, EpisodeManager
+from ..options import EpisodeOptions
+from ..response import StepOutput, footer, step_result, tool_result
+
+EpisodeId = Annotated[str, Field(description="the id start_episode returned", min_length=1, max_length=64)]
+
+
+class TaskSummary(BaseModel):
+    id: str
+    domain: str
+    intent: str
+    step_limit: int
+
+
+class TaskList(BaseModel):
+    tasks: list[TaskSummary]
+    total: int
+    offset: int
+    next_offset: int | None
+
+
+class EpisodeStarted(BaseModel):
+    episode_id: str
+    task_id: str
+    domain: str
+    intent: str
+    active_environment: str
+    environments: dict[str, str]
+    step_limit: int
+    observation: dict[str, Any]
+
+
+class EpisodeStatus(BaseModel):
+    episode_id: str
+    task_id: str
+    domain: str
+    status: str
+    end_reason: str | None
+    active_environment: str
+    environments: dict[str, str]
+    steps: int
+    step_limit: int
+    steps_left: int
+    switches: int
+    answer: str | None
+
+
+def public_task(task: Any) -> dict[str, Any]:
+    """What an agent may see of a task: never its goals, answer or oracle (the reference leaked goals)."""
+    start = task.start
+    return {
+        "id": task.id,
+        "domain": task.domain,
+        "intent": task.intent,
+        "step_limit": task.step_limit,
+        "start_environment": start.environment,
+        "environments": {
+            **({"web": "browser"} if start.web is not None or task.web_goals else {}),
+            **({"embodied": start.embodied.kind} if start.embodied is not None else {}),
+        },
+    }
+
+
+async def _observe(episode: Any) -> Observation:
+    env = episode.environments.get(episode.active)
+    if env is None:
+        return Observation(text="(this episode has no environment to observe)")
+    return await env.observe()
+
+
+def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
+    @mcp.tool(description="List benchmark tasks, optionally of one domain, a page at a time.")
+    def list_tasks(
+        domain: Literal["cooking", "navigation", "shopping", "traveling", "geolocation", "demo"] | None = None,
+        limit: Annotated[int, Field(ge=1, le=500)] = 20,
+        offset: Annotated[int, Field(ge=0)] = 0,
+    ) -> Annotated[CallToolResult, TaskList]:
+        tasks = sorted(episodes.tasks.all(domain), key=lambda t: t.id)
+        page = tasks[offset : offset + limit]
+        nxt = offset + limit if offset + limit < len(tasks) else None
+        out = TaskList(
+            tasks=[TaskSummary(id=t.id, domain=t.domain, intent=t.intent, step_limit=t.step_limit) for t in page],
+            total=len(tasks),
+            offset=offset,
+            next_offset=nxt,
+        )
+        lines = [f"{len(tasks)} tasks" + (f" in {domain}" if domain else "") + f"; showing {offset}–{offset + len(page)}:"]
+        lines += [f"- {t.id} [{t.domain}] {t.intent}" for t in page]
+        if nxt is not None:
+            lines.append(f"(more: offset={nxt})")
+        return tool_result(out, "\n".join(lines))
+
+    @mcp.tool(description="Start an episode of a task. Returns the episode_id to pass to every other tool.")
+    async def start_episode(task_id: str, options: EpisodeOptions | None = None) -> Annotated[CallToolResult, EpisodeStarted]:
+        opts = (options or EpisodeOptions()).model_dump(exclude_none=True)
+        episode = await episodes.start(task_id, opts)
+        _, observation = await episodes.act(episode.id, "start_episode", {"task_id": task_id, "options": opts},
+                                            _observe, environment=None, counted=False)
+        out = EpisodeStarted(
+            episode_id=episode.id,
+            task_id=episode.task.id,
+            domain=episode.task.domain,
+            intent=episode.task.intent,
+            active_environment=episode.active,
+            environments={k: type(v).name for k, v in episode.environments.items()},
+            step_limit=episode.task.step_limit,
+            observation=observation.data,
+        )
+        envs = ", ".join(f"{k}={type(v).name}" for k, v in episode.environments.items()) or "none"
+        text = (
+            f"Episode {episode.id} started.\nTask: {episode.task.intent}\n"
+            f"Environments: {envs}; active: {episode.active}. Step limit: {episode.task.step_limit}.\n\n"
+            f"{observation.text}\n{footer(episode)}"
+        )
+        return tool_result(out, text, observation.images)
+
+    @mcp.tool(description="Show the active environment's observation again (does not count as a step).")
+    async def get_observation(episode_id: EpisodeId) -> Annotated[CallToolResult, StepOutput]:
+        episode, observation = await episodes.act(episode_id, "get_observation", {}, _observe,
+                                                  environment=None, counted=False)
+        return step_result(episode, observation)
+
+    @mcp.tool(description="Switch the active environment (web <-> embodied). Say in message what you will do there.")
+    async def switch_environment(
+        episode_id: EpisodeId,
+        target: Literal["web", "embodied"],
+        message: Annotated[str, Field(max_length=2000)] = "",
+    ) -> Annotated[CallToolResult, StepOutput]:
+        episode, observation = await episodes.switch(episode_id, target, message)
+        return step_result(episode, observation)
+
+    @mcp.tool(description="End the episode, with your answer when the task asks a question.")
+    async def finish_episode(
+        episode_id: EpisodeId, answer: Annotated[str | None, Field(max_length=4000)] = None
+    ) -> Annotated[CallToolResult, EpisodeStatus]:
+        episode = await episodes.finish(episode_id, answer)
+        return tool_result(EpisodeStatus(**episode.summary()), f"Episode {episode.id} finished. {footer(episode)}")
+
+    @mcp.tool(description="The episode's status: active environment, steps used and left, whether it ended.")
+    async def episode_status(episode_id: EpisodeId) -> Annotated[CallToolResult, EpisodeStatus]:
+        episode = episodes.get(episode_id)
+        s = episode.summary()
+        text = (
+            f"{episode.id}: task {episode.task.id} ({episode.task.domain}), {episode.status}"
+            + (f" ({episode.end_reason})" if episode.end_reason else "")
+            + f"; active {episode.active}; steps {episode.steps}/{episode.task.step_limit}; switches {episode.switches}"
+        )
+        return tool_result(EpisodeStatus(**s), text)
+
+    @mcp.resource("ewa://tasks/{task_id}", mime_type="application/json", description="A task as the agent may see it")
+    def task_resource(task_id: str) -> str:
+        task = episodes.tasks.get(task_id)
+        if task is None:
+            raise ResourceError(f"unknown task id {task_id!r}; call list_tasks to see the ids")
+        return json.dumps(public_task(task), indent=2)
+
+    @mcp.resource("ewa://episodes/{episode_id}/state", mime_type="application/json",
+                  description="An episode's status")
+    def episode_state_resource(episode_id: str) -> str:
+        try:
+            return json.dumps(episodes.get(episode_id).summary(), indent=2)
+        except EpisodeError as exc:
+            raise ResourceError(str(exc)) from exc
+
+    @mcp.resource("ewa://episodes/{episode_id}/trajectory", mime_type="application/jsonl",
+                  description="An episode's recorded tool calls, one JSON object per line")
+    def episode_trajectory_resource(episode_id: str) -> str:
+        try:
+            episode = episodes.get(episode_id)
+        except EpisodeError as exc:
+            raise ResourceError(str(exc)) from exc
+        path = episode.recorder.directory / "trajectory.jsonl"
+        return path.read_text(encoding="utf-8") if path.exists() else ""
