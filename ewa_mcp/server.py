@@ -46,6 +46,8 @@ def build_server(config: ServerConfig | None = None) -> tuple[MCPServer, Episode
     run_dir = config.run_dir or (runs_dir() / new_run_id())
     services = Services(config.services)
     episodes = EpisodeManager(tasks, run_dir, services, config.environments)
+    # The embedded sites report per-episode events (orders, page views) through this sink.
+    services.config.setdefault("emit_event", episodes.emit_event)
 
     @asynccontextmanager
     async def lifespan(_: MCPServer) -> AsyncIterator[dict[str, Any]]:

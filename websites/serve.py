@@ -1,0 +1,135 @@
+"""Serve all embedded sites on loopback ports, in a background thread of the calling process.
+
+The MCP server starts this lazily (the first web episode); ``ewa-mcp sites`` starts it for
+people. Each site gets its own port so URLs, cookies and the browser's origin checks behave
+like separate web sites.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import importlib
+import logging
+import socket
+import threading
+from pathlib import Path
+from typing import Any
+
+import uvicorn
+
+from .common import SiteContext
+
+log = logging.getLogger("ewa_mcp.websites")
+
+# site name -> "module:create_app"; a site whose module is missing in this build is skipped.
+SITES: dict[str, str] = {
+    "home": "ewa_mcp.websites.home.app:create_app",
+    "recipes": "ewa_mcp.websites.recipes.app:create_app",
+    "shop": "ewa_mcp.websites.shop.app:create_app",
+    "map": "ewa_mcp.websites.map.app:create_app",
+    "wiki": "ewa_mcp.websites.wiki.app:create_app",
+}
+DEFAULT_PORTS = {"home": 8701, "recipes": 8702, "shop": 8703, "map": 8704, "wiki": 8705}
+
+
+def _free_port(host: str) -> int:
+    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
+        s.bind((host, 0))
+        return s.getsockname()[1]
+
+
+def available_sites() -> dict[str, Any]:
+    apps = {}
+    for name, path in SITES.items():
+        module_name, _, attr = path.partition(":")
+        try:
+            module = importlib.import_module(module_name)
+        except ModuleNotFoundError as exc:
+            if exc.name and module_name.startswith(exc.name):
+                continue  # this site has not landed in this build
+            raise
+        apps[name] = getattr(module, attr)
+    return apps
+
+
+class SiteServer:
+    def __init__(self, host: str = "127.0.0.1", ports: dict[str, int] | None = None,
+                 emit: Any = None, data_dir: Path | None = None):
+        self.host = host
+        factories = available_sites()
+        ports = ports or {}
+        self.ports = {name: ports.get(name) or _free_port(host) for name in factories}
+        self.urls = {name: f"http://{host}:{port}" for name, port in self.ports.items()}
+        kwargs: dict[str, Any] = {"urls": self.urls, "data_dir": data_dir}
+        if emit is not None:
+            kwargs["emit"] = emit
+        self.context = SiteContext(**kwargs)
+        self.apps = {name: factory(self.context) for name, factory in factories.items()}
+        self._servers: list[uvicorn.Server] = []
+        self._thread: threading.Thread | None = None
+        self._ready = threading.Event()
+        self._error: BaseException | None = None
+
+    # ------------------------------------------------------------ lifecycle
+    def start(self, timeout: float = 15.0) -> "SiteServer":
+        self._thread = threading.Thread(target=self._run, name="ewa-websites", daemon=True)
+        self._thread.start()
+        if not self._ready.wait(timeout):
+            raise RuntimeError(f"the embedded web sites did not start within {timeout}s")
+        if self._error is not None:
+            raise RuntimeError(f"the embedded web sites failed to start: {self._error}") from self._error
+        return self
+
+    def _run(self) -> None:
+        try:
+            asyncio.run(self._serve())
+        except BaseException as exc:  # surfaced to start()
+            self._error = exc
+            self._ready.set()
+
+    async def _serve(self) -> None:
+        for name, app in self.apps.items():
+            config = uvicorn.Config(app, host=self.host, port=self.ports[name], log_level="warning",
+                                    access_log=False, lifespan="on")
+            self._servers.append(uvicorn.Server(config))
+        tasks = [asyncio.create_task(s.serve()) for s in self._servers]
+        while not all(s.started for s in self._servers):
+            if any(t.done() for t in tasks):
+                for t in tasks:
+                    if t.done() and t.exception():
+                        raise t.exception()  # type: ignore[misc]
+                raise RuntimeError("a site server exited during start-up (port in use?)")
+            await asyncio.sleep(0.01)
+        self._ready.set()
+        await asyncio.gather(*tasks)
+
+    def stop(self) -> None:
+        for server in self._servers:
+            server.should_exit = True
+        if self._thread is not None:
+            self._thread.join(timeout=10)
+
+    close = stop
+
+    # ------------------------------------------------------------ addressing
+    def resolve(self, url: str) -> str:
+        """Map a site-relative URL such as "recipes:/recipe/r001" to its loopback URL."""
+        site, sep, path = url.partition(":")
+        if sep and site in self.urls and not path.startswith("//"):
+            return self.urls[site] + (path or "/")
+        return url
+
+    def origins(self) -> list[str]:
+        return list(self.urls.values())
+
+
+def site_service(services: Any) -> SiteServer:
+    """Services factory: ``await services.get("websites", site_service)``.
+
+    Uses ``services.config["emit_event"]`` (the episode manager's event sink) and optional
+    ``services.config["site_ports"]`` / ``["site_data_dir"]``."""
+    return SiteServer(
+        ports=services.config.get("site_ports"),
+        emit=services.config.get("emit_event"),
+        data_dir=services.config.get("site_data_dir"),
+    ).start()
