@@ -1,0 +1,151 @@
+"""The ``ewa-mcp`` command: serve, sites, tasks, demo (and the commands later domains add)."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import logging
+import sys
+from pathlib import Path
+
+from . import __version__
+
+
+def _server_config(args: argparse.Namespace):
+    from .server import ServerConfig
+
+    return ServerConfig(
+        task_dirs=[Path(p) for p in args.tasks] if getattr(args, "tasks", None) else None,
+        run_dir=Path(args.run_dir) if getattr(args, "run_dir", None) else None,
+    )
+
+
+def cmd_serve(args: argparse.Namespace) -> int:
+    from .server import build_server
+
+    # stdout carries the stdio protocol: every log line goes to stderr.
+    logging.basicConfig(level=logging.WARNING if not args.verbose else logging.INFO, stream=sys.stderr)
+    mcp, episodes = build_server(_server_config(args))
+    print(f"ewa-mcp {__version__}: {len(episodes.tasks)} tasks; episodes recorded under {episodes.run_dir}",
+          file=sys.stderr)
+    if args.transport == "stdio":
+        mcp.run("stdio")
+    else:
+        import anyio
+        import uvicorn
+
+        if args.host not in ("127.0.0.1", "localhost", "::1") and not args.allow_remote:
+            print(f"refusing to listen on {args.host}: the server drives a browser and records runs; "
+                  "pass --allow-remote if you really mean it", file=sys.stderr)
+            return 2
+        app = mcp.streamable_http_app()
+        print(f"MCP endpoint: http://{args.host}:{args.port}/mcp", file=sys.stderr)
+        config = uvicorn.Config(app, host=args.host, port=args.port, log_level="warning")
+        anyio.run(uvicorn.Server(config).serve)
+    return 0
+
+
+def cmd_sites(args: argparse.Namespace) -> int:
+    import time
+
+    from .websites.serve import DEFAULT_PORTS, SiteServer
+
+    ports = {name: args.base_port + i for i, name in enumerate(DEFAULT_PORTS)} if args.base_port else DEFAULT_PORTS
+    server = SiteServer(host=args.host, ports=ports).start()
+    for name, url in server.urls.items():
+        print(f"{name:8s} {url}/")
+    print("Serving; press Ctrl-C to stop.", flush=True)
+    try:
+        while True:
+            time.sleep(3600)
+    except KeyboardInterrupt:
+        server.stop()
+    return 0
+
+
+def cmd_tasks(args: argparse.Namespace) -> int:
+    from .paths import tasks_dir
+    from .taskmodel import TaskStore, export_json_schema
+
+    if args.action == "schema":
+        out = Path(args.output) if args.output else None
+        text = json.dumps(export_json_schema(), indent=2) + "\n"
+        if out:
+            out.write_text(text, encoding="utf-8")
+            print(f"wrote {out}")
+        else:
+            sys.stdout.write(text)
+        return 0
+    roots = [Path(p) for p in args.tasks] if args.tasks else [tasks_dir()]
+    store = TaskStore(roots)
+    tasks = store.all()
+    if args.action == "validate":
+        for err in store.errors:
+            print(f"error: {err}", file=sys.stderr)
+        counts: dict[str, int] = {}
+        for t in tasks:
+            counts[t.domain] = counts.get(t.domain, 0) + 1
+        print(json.dumps({"tasks": len(tasks), "by_domain": counts, "errors": len(store.errors)}))
+        return 1 if store.errors else 0
+    if args.action == "generate":
+        from .taskgen import generate_all
+
+        counts = generate_all(Path(args.output) if args.output else tasks_dir(), domains=args.domain)
+        print(json.dumps(counts))
+        return 0
+    for t in sorted(tasks, key=lambda t: t.id):
+        if args.domain and t.domain not in args.domain:
+            continue
+        print(f"{t.id}\t{t.domain}\t{t.intent}")
+    return 0
+
+
+def cmd_demo(args: argparse.Namespace) -> int:
+    from .demo import run_demo
+
+    return run_demo()
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="ewa-mcp", description="Embodied web agent benchmark as an MCP server.")
+    parser.add_argument("--version", action="version", version=f"ewa-mcp {__version__}")
+    sub = parser.add_subparsers(dest="command", required=True)
+
+    p = sub.add_parser("serve", help="run the MCP server (stdio or streamable HTTP)")
+    p.add_argument("--transport", choices=["stdio", "http"], default="stdio")
+    p.add_argument("--host", default="127.0.0.1")
+    p.add_argument("--port", type=int, default=8765)
+    p.add_argument("--allow-remote", action="store_true", help="allow a non-loopback --host")
+    p.add_argument("--tasks", action="append", metavar="DIR", help="task directory (repeatable; default: tasks/)")
+    p.add_argument("--run-dir", metavar="DIR", help="where episodes are recorded (default: runs/<new id>)")
+    p.add_argument("-v", "--verbose", action="store_true")
+    p.set_defaults(func=cmd_serve)
+
+    p = sub.add_parser("sites", help="serve the five embedded web sites for people to browse")
+    p.add_argument("--host", default="127.0.0.1")
+    p.add_argument("--base-port", type=int, default=0, help="first port (default: 8701..8705)")
+    p.set_defaults(func=cmd_sites)
+
+    p = sub.add_parser("tasks", help="list, validate or generate task suites; export the task JSON Schema")
+    p.add_argument("action", choices=["list", "validate", "generate", "schema"])
+    p.add_argument("--tasks", action="append", metavar="DIR")
+    p.add_argument("--domain", action="append", help="restrict to a domain (repeatable)")
+    p.add_argument("-o", "--output", help="output file (schema) or directory (generate)")
+    p.set_defaults(func=cmd_tasks)
+
+    p = sub.add_parser("demo", help="start the server in-process, play one episode, print what happened")
+    p.set_defaults(func=cmd_demo)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return int(args.func(args) or 0)
+    except KeyboardInterrupt:
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

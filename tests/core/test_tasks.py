@@ -1,0 +1,67 @@
+"""The task schema and loader: valid files load, malformed ones give errors that name file and field."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from ewa_mcp.cli import main
+from ewa_mcp.paths import REPO_ROOT
+from ewa_mcp.taskmodel import Task, TaskFileError, TaskStore, export_json_schema, load_task_file
+
+from .fixtures import counter_task
+
+
+def test_round_trip_and_discriminated_goals(tmp_path):
+    task = Task.model_validate({
+        **counter_task(),
+        "web_goals": [{"kind": "recipe_completed", "recipe_id": "r001"}],
+        "embodied_goals": [{"kind": "object_in", "object_type": "Tomato", "receptacle_type": "Plate",
+                            "with_state": {"isSliced": True}}],
+    })
+    again = Task.model_validate_json(task.model_dump_json())
+    assert again == task
+    assert again.embodied_goals[0].receptacle_type == "Plate"
+
+
+@pytest.mark.parametrize("payload, needle", [
+    ("{not json", "not valid JSON"),
+    (json.dumps({"id": "x", "intent": "no domain"}), "domain"),
+    (json.dumps({**counter_task(), "step_limit": 0}), "step_limit"),
+    (json.dumps({**counter_task(), "web_goals": [{"kind": "teleported"}]}), "web_goals"),
+    (json.dumps({**counter_task(), "colour": "red"}), "colour"),
+    (json.dumps({**counter_task(), "id": "Has Spaces"}), "id"),
+])
+def test_malformed_task_files_are_reported(tmp_path, payload, needle):
+    path = tmp_path / "bad.json"
+    path.write_text(payload)
+    with pytest.raises(TaskFileError) as info:
+        load_task_file(path)
+    assert str(path) in str(info.value) and needle in str(info.value)
+
+
+def test_store_skips_bad_files_and_duplicate_ids(tmp_path):
+    (tmp_path / "a.json").write_text(json.dumps([counter_task("one"), counter_task("two")]))
+    (tmp_path / "b.json").write_text(json.dumps(counter_task("one")))
+    (tmp_path / "c.json").write_text("[")
+    store = TaskStore([tmp_path])
+    assert sorted(t.id for t in store.all()) == ["one", "two"]
+    assert len(store.errors) == 2 and any("duplicate" in e for e in store.errors)
+
+
+def test_committed_schema_is_current():
+    committed = json.loads((REPO_ROOT / "docs" / "task.schema.json").read_text())
+    assert committed == export_json_schema(), "run: ewa-mcp tasks schema -o docs/task.schema.json"
+
+
+def test_committed_tasks_validate(capsys):
+    assert main(["tasks", "validate"]) == 0
+    summary = json.loads(capsys.readouterr().out)
+    assert summary["errors"] == 0 and summary["tasks"] >= 1
+
+
+def test_validate_reports_bad_dir(tmp_path, capsys):
+    (tmp_path / "bad.json").write_text("{}")
+    assert main(["tasks", "validate", "--tasks", str(tmp_path)]) == 1
+    assert "invalid task" in capsys.readouterr().err
