@@ -100,6 +100,52 @@ def cmd_tasks(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_eval(args: argparse.Namespace) -> int:
+    import anyio
+
+    from .evaluation.agents import NoopAgent, OracleAgent, RandomAgent, ReplayAgent, ReplayError, load_replay
+    from .evaluation.runner import EvalError, run_eval, select_tasks
+    from .paths import runs_dir, tasks_dir
+    from .records import new_run_id
+    from .taskmodel import TaskStore
+
+    task_dirs = [Path(p) for p in args.tasks_dir] if args.tasks_dir else [tasks_dir()]
+    try:
+        if args.agent == "replay":
+            if not args.replay:
+                raise EvalError("--agent replay needs a FILE: ewa-mcp eval --agent replay path/to/replay.jsonl")
+            agent = ReplayAgent(load_replay(Path(args.replay)))
+        else:
+            agent = {"oracle": OracleAgent, "noop": NoopAgent, "random": RandomAgent}[args.agent]()
+        store = TaskStore(task_dirs)
+        patterns = args.tasks
+        if args.agent == "replay" and not patterns:
+            patterns = sorted(agent.calls)  # a replay runs the tasks it has calls for
+        tasks = select_tasks(store, patterns, args.sample, args.domain)
+    except (EvalError, ReplayError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    run_dir = Path(args.run_dir) if args.run_dir else runs_dir() / new_run_id()
+    print(f"{agent.name}: {len(tasks)} tasks, {args.workers} worker(s), {args.transport}; recording to {run_dir}",
+          file=sys.stderr)
+    summary = anyio.run(lambda: run_eval(tasks, agent, transport=args.transport, workers=args.workers,
+                                         run_dir=run_dir, task_dirs=task_dirs, progress=not args.quiet))
+    failed = [o for o in summary.outcomes if o.failure]
+    for o in failed[:10]:
+        print(f"  could not play {o.task_id}: {o.failure}", file=sys.stderr)
+    print(f"played {len(summary.outcomes) - len(failed)}/{len(summary.outcomes)} episodes in {summary.seconds:.1f}s",
+          file=sys.stderr)
+    try:
+        from .graders import render_report
+        from .graders import grade_run
+    except ImportError:
+        print("(graders not available in this build; grade later with ewa-grade RUN_DIR)", file=sys.stderr)
+        return 1 if failed else 0
+    report = grade_run(run_dir)
+    print(render_report(report, fmt=args.format))
+    return 1 if failed else 0
+
+
 def cmd_demo(args: argparse.Namespace) -> int:
     from .demo import run_demo
 
@@ -132,6 +178,20 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--domain", action="append", help="restrict to a domain (repeatable)")
     p.add_argument("-o", "--output", help="output file (schema) or directory (generate)")
     p.set_defaults(func=cmd_tasks)
+
+    p = sub.add_parser("eval", help="run an agent over tasks through the MCP server, then grade the run")
+    p.add_argument("--agent", choices=["oracle", "noop", "random", "replay"], default="oracle")
+    p.add_argument("replay", nargs="?", metavar="FILE", help="replay: a JSONL of tool calls or a run directory")
+    p.add_argument("--tasks", action="append", metavar="GLOB", help="task id glob (repeatable)")
+    p.add_argument("--domain", action="append", help="restrict to a domain (repeatable)")
+    p.add_argument("--sample", type=int, metavar="N", help="N tasks per domain, chosen deterministically")
+    p.add_argument("--workers", type=int, default=1)
+    p.add_argument("--transport", choices=["inprocess", "stdio", "http"], default="inprocess")
+    p.add_argument("--run-dir", metavar="DIR")
+    p.add_argument("--tasks-dir", action="append", metavar="DIR", help="task directory (default: tasks/)")
+    p.add_argument("--format", choices=["table", "json", "markdown"], default="table")
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+    p.set_defaults(func=cmd_eval)
 
     p = sub.add_parser("demo", help="start the server in-process, play one episode, print what happened")
     p.set_defaults(func=cmd_demo)

@@ -1,0 +1,185 @@
+"""Run an agent over tasks through the real MCP server (in-process, stdio or HTTP), then grade."""
+
+from __future__ import annotations
+
+import fnmatch
+import os
+import socket
+import subprocess
+import sys
+import time
+from contextlib import asynccontextmanager
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import anyio
+import httpx
+from mcp import Client, StdioServerParameters
+
+from ..taskmodel import Task, TaskStore
+
+
+class EvalError(ValueError):
+    """Bad eval input (no matching tasks, bad replay): the message names the fix."""
+
+
+def select_tasks(store: TaskStore, patterns: list[str] | None, sample: int | None,
+                 domains: list[str] | None = None) -> list[Task]:
+    tasks = sorted(store.all(), key=lambda t: t.id)
+    if domains:
+        tasks = [t for t in tasks if t.domain in domains]
+    if patterns:
+        tasks = [t for t in tasks if any(fnmatch.fnmatchcase(t.id, p) for p in patterns)]
+        if not tasks:
+            raise EvalError(f"no task id matches {patterns}; see `ewa-mcp tasks list` for the ids")
+    if not tasks:
+        raise EvalError("no tasks to run; check --tasks-dir / --domain")
+    if sample:
+        # N per domain, evenly spaced over the sorted ids: deterministic and spread across templates.
+        by_domain: dict[str, list[Task]] = {}
+        for t in tasks:
+            by_domain.setdefault(t.domain, []).append(t)
+        tasks = []
+        for domain in sorted(by_domain):
+            group = by_domain[domain]
+            n = min(sample, len(group))
+            tasks += [group[(i * len(group)) // n] for i in range(n)]
+    return tasks
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def _server_args(task_dirs: list[Path], run_dir: Path) -> list[str]:
+    args = ["-m", "ewa_mcp", "serve", "--run-dir", str(run_dir)]
+    for d in task_dirs:
+        args += ["--tasks", str(d)]
+    return args
+
+
+@asynccontextmanager
+async def connect(transport: str, task_dirs: list[Path], run_dir: Path):
+    """One MCP client session to a server that records into run_dir."""
+    if transport == "inprocess":
+        from ..server import ServerConfig, build_server
+
+        mcp, _ = build_server(ServerConfig(task_dirs=task_dirs, run_dir=run_dir))
+        async with Client(mcp) as client:
+            yield client
+    elif transport == "stdio":
+        params = StdioServerParameters(command=sys.executable, args=_server_args(task_dirs, run_dir),
+                                       env=dict(os.environ))
+        async with Client(params) as client:
+            yield client
+    elif transport == "http":
+        port = _free_port()
+        proc = subprocess.Popen([sys.executable, *_server_args(task_dirs, run_dir), "--transport", "http",
+                                 "--port", str(port)], stderr=subprocess.DEVNULL)
+        try:
+            deadline = time.monotonic() + 60
+            while True:
+                try:
+                    httpx.get(f"http://127.0.0.1:{port}/mcp", timeout=1)
+                    break
+                except httpx.TransportError:
+                    if proc.poll() is not None or time.monotonic() > deadline:
+                        raise EvalError("the HTTP server did not start; run `ewa-mcp serve --transport http` "
+                                        "by hand to see why")
+                    await anyio.sleep(0.1)
+            async with Client(f"http://127.0.0.1:{port}/mcp") as client:
+                yield client
+        finally:
+            proc.terminate()
+            proc.wait(timeout=20)
+    else:
+        raise EvalError(f"unknown transport {transport!r}; use inprocess, stdio or http")
+
+
+@dataclass
+class EpisodeOutcome:
+    task_id: str
+    domain: str
+    episode_id: str | None
+    calls: int = 0
+    errors: int = 0
+    failure: str | None = None  # the episode could not be played at all
+    seconds: float = 0.0
+
+
+@dataclass
+class EvalSummary:
+    run_dir: Path
+    agent: str
+    transport: str
+    outcomes: list[EpisodeOutcome] = field(default_factory=list)
+    seconds: float = 0.0
+
+
+class Progress:
+    def __init__(self, total: int, enabled: bool):
+        self.total, self.done, self.failed, self.enabled = total, 0, 0, enabled
+        self.started = time.monotonic()
+
+    def tick(self, outcome: EpisodeOutcome) -> None:
+        self.done += 1
+        self.failed += outcome.failure is not None
+        if self.enabled:
+            width = 30
+            filled = int(width * self.done / max(1, self.total))
+            elapsed = time.monotonic() - self.started
+            sys.stderr.write(f"\r[{'#' * filled}{'.' * (width - filled)}] {self.done}/{self.total} "
+                             f"episodes · {self.failed} failed to run · {elapsed:5.1f}s")
+            if self.done == self.total:
+                sys.stderr.write("\n")
+            sys.stderr.flush()
+
+
+async def run_eval(tasks: list[Task], agent: Any, *, transport: str = "inprocess", workers: int = 1,
+                   run_dir: Path, task_dirs: list[Path], progress: bool = True) -> EvalSummary:
+    from .agents import Session
+
+    run_dir.mkdir(parents=True, exist_ok=True)
+    summary = EvalSummary(run_dir=run_dir, agent=agent.name, transport=transport)
+    bar = Progress(len(tasks), progress)
+    started = time.monotonic()
+    queue = list(reversed(tasks))
+
+    async with connect(transport, task_dirs, run_dir) as client:
+
+        async def play(task: Task) -> EpisodeOutcome:
+            t0 = time.monotonic()
+            outcome = EpisodeOutcome(task_id=task.id, domain=task.domain, episode_id=None)
+            try:
+                start = await client.call_tool("start_episode", {"task_id": task.id})
+                if start.is_error:
+                    outcome.failure = "start_episode: " + " ".join(getattr(c, "text", "") for c in start.content)
+                    return outcome
+                session = Session(client=client, task=task, episode_id=start.structured_content["episode_id"],
+                                  start=start)
+                outcome.episode_id = session.episode_id
+                await agent.play(session)
+                if not session.ended:  # make sure every episode leaves a final state
+                    await session.call("finish_episode", {})
+                outcome.calls = len(session.log)
+                outcome.errors = sum(not entry["ok"] for entry in session.log)
+            except Exception as exc:  # one broken episode must not end the run
+                outcome.failure = f"{type(exc).__name__}: {exc}"
+            finally:
+                outcome.seconds = time.monotonic() - t0
+            return outcome
+
+        async def worker() -> None:
+            while queue:
+                outcome = await play(queue.pop())
+                summary.outcomes.append(outcome)
+                bar.tick(outcome)
+
+        async with anyio.create_task_group() as tg:
+            for _ in range(max(1, workers)):
+                tg.start_soon(worker)
+    summary.seconds = time.monotonic() - started
+    return summary
