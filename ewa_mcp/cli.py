@@ -146,6 +146,36 @@ def cmd_eval(args: argparse.Namespace) -> int:
     return 1 if failed else 0
 
 
+def cmd_play(args: argparse.Namespace) -> int:
+    import anyio
+
+    from .evaluation.human import HumanAgent
+    from .evaluation.runner import run_eval
+    from .paths import runs_dir, tasks_dir
+    from .records import new_run_id
+    from .taskmodel import TaskStore
+
+    task_dirs = [Path(p) for p in args.tasks_dir] if args.tasks_dir else [tasks_dir()]
+    task = TaskStore(task_dirs).get(args.task_id)
+    if task is None:
+        print(f"error: unknown task id {args.task_id!r}; see `ewa-mcp tasks list`", file=sys.stderr)
+        return 2
+    run_dir = Path(args.run_dir) if args.run_dir else runs_dir() / ("human-" + new_run_id())
+    summary = anyio.run(lambda: run_eval([task], HumanAgent(), run_dir=run_dir, task_dirs=task_dirs,
+                                         progress=False))
+    outcome = summary.outcomes[0]
+    if outcome.failure:
+        print(f"error: {outcome.failure}", file=sys.stderr)
+        return 1
+    print(f"recorded: {run_dir / (outcome.episode_id or '')}")
+    try:
+        from .graders import grade_run, render_report
+    except ImportError:
+        return 0
+    print(render_report(grade_run(run_dir), fmt="table"))
+    return 0
+
+
 def cmd_demo(args: argparse.Namespace) -> int:
     from .demo import run_demo
 
@@ -192,6 +222,12 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--format", choices=["table", "json", "markdown"], default="table")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     p.set_defaults(func=cmd_eval)
+
+    p = sub.add_parser("play", help="play a task yourself at a terminal prompt (recorded and graded)")
+    p.add_argument("task_id")
+    p.add_argument("--run-dir", metavar="DIR")
+    p.add_argument("--tasks-dir", action="append", metavar="DIR")
+    p.set_defaults(func=cmd_play)
 
     p = sub.add_parser("demo", help="start the server in-process, play one episode, print what happened")
     p.set_defaults(func=cmd_demo)
