@@ -1,0 +1,59 @@
+"""grade_run: a whole run directory -> RunReport."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from .aggregate import domain_aggregate, error_breakdown
+from .episode import grade_episode
+from .models import RunReport
+from .rundir import EPISODE_FILES, episode_dirs
+
+DOMAIN_ORDER = ("navigation", "shopping", "traveling", "cooking", "geolocation")
+
+
+class RunDirError(ValueError):
+    """RUN_DIR itself is unusable (missing, not a directory, no episodes); the message says how to fix it."""
+
+
+def _domain_key(domain: str) -> tuple[int, str]:
+    return (DOMAIN_ORDER.index(domain) if domain in DOMAIN_ORDER else len(DOMAIN_ORDER), domain)
+
+
+def grade_run(run_dir: str | Path, radius_m: float | None = None, label: str | None = None) -> RunReport:
+    """Grade every episode under RUN_DIR. Raises RunDirError only when RUN_DIR does not exist or holds
+    no episode directory; damaged episodes are graded as far as their data allows."""
+    if radius_m is not None and not radius_m > 0:
+        raise ValueError(f"radius_m must be a positive number of metres, got {radius_m!r}")
+    root = Path(run_dir)
+    if not root.exists():
+        raise RunDirError(f"run directory {root} does not exist; pass the directory a run wrote (runs/<run_id>)")
+    if not root.is_dir():
+        raise RunDirError(f"{root} is a file, not a run directory; pass the directory that holds the episode folders")
+    dirs = episode_dirs(root)
+    if not dirs:
+        raise RunDirError(
+            f"{root} holds no episodes (no sub-directory with any of {', '.join(EPISODE_FILES)}); "
+            "pass a run directory (runs/<run_id>), not the runs/ folder or an episode folder"
+            if not (root / "task.json").exists() and not (root / "trajectory.jsonl").exists()
+            else f"{root} is an episode directory; pass its parent (the run directory), or use grade_episode"
+        )
+    episodes = [grade_episode(d, radius_m) for d in dirs]
+    domains = sorted({e.domain for e in episodes if e.domain != "demo"}, key=_domain_key)
+    by_domain = {d: [e for e in episodes if e.domain == d] for d in domains}
+    demo = [e for e in episodes if e.domain == "demo"]
+    scored = [e for e in episodes if e.domain != "demo"]
+    errors = {d: error_breakdown(eps) for d, eps in by_domain.items()}
+    errors["all"] = error_breakdown(scored)
+    problems = [f"{e.episode_id}: {p}" for e in episodes for p in e.problems]
+    return RunReport(
+        run_dir=str(root),
+        label=label or root.name,
+        radius_m=radius_m,
+        n_episodes=len(episodes),
+        domains={d: domain_aggregate(d, eps) for d, eps in by_domain.items()},
+        demo=domain_aggregate("demo", demo) if demo else None,
+        errors=errors,
+        episodes=episodes,
+        problems=problems,
+    )

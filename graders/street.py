@@ -1,0 +1,114 @@
+"""Street goals: did the agent stop near the goal, and how efficiently did it walk there.
+
+Success is "stopped within the radius" (default 25 m), not the reference's exact node: street
+graphs have nodes every 10–25 m, so stopping one panorama short of the door is an arrival.
+Exact-node arrival, distance to goal and SPL are reported beside it.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from ewa_mcp.taskmodel import ReachedPlace
+
+from .models import ConditionResult, NavigationResult
+
+EARTH_RADIUS_M = 6_371_008.8  # mean Earth radius (IUGG)
+DEFAULT_RADIUS_M = 25.0
+
+
+def haversine_m(lat1: float, lng1: float, lat2: float, lng2: float) -> float:
+    p1, p2 = math.radians(lat1), math.radians(lat2)
+    dp, dl = p2 - p1, math.radians(lng2 - lng1)
+    a = math.sin(dp / 2) ** 2 + math.cos(p1) * math.cos(p2) * math.sin(dl / 2) ** 2
+    return 2 * EARTH_RADIUS_M * math.asin(min(1.0, math.sqrt(a)))
+
+
+def _number(value: Any) -> float | None:
+    if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
+        return None
+    return float(value)
+
+
+def shortest_path(goal: ReachedPlace, metadata: dict[str, Any]) -> tuple[float | None, str]:
+    """The task's shortest walk (metadata.shortest_path_m, from the generator's Dijkstra), else the
+    straight line from metadata.start_lat/start_lng to the goal (a lower bound, so SPL is optimistic)."""
+    value = _number(metadata.get("shortest_path_m"))
+    if value is not None and value >= 0:
+        return value, "metadata"
+    lat, lng = _number(metadata.get("start_lat")), _number(metadata.get("start_lng"))
+    if lat is not None and lng is not None:
+        return haversine_m(lat, lng, goal.lat, goal.lng), "straight_line"
+    return None, "unknown"
+
+
+def order_store_check(goal: ReachedPlace, metadata: dict[str, Any], orders: list[dict[str, Any]]) -> tuple[bool, str]:
+    """Shopping: the goal must be the pickup store of the order (metadata.store_nodes maps store ids to nodes)."""
+    store_nodes = metadata.get("store_nodes")
+    if not isinstance(store_nodes, dict):
+        return False, "task metadata has no store_nodes, so the pickup store cannot be checked"
+    if not orders:
+        return False, "no matching order was placed, so there is no pickup store to walk to"
+    for order in orders:
+        if store_nodes.get(order.get("store_id")) == goal.node:
+            return True, f"walked to the pickup store of order {order.get('order_id')}"
+    stores = ", ".join(sorted({str(o.get("store_id")) for o in orders}))
+    return False, f"the goal is not the pickup store of the order (ordered at {stores})"
+
+
+def check_reached_place(
+    goal: ReachedPlace,
+    state: dict[str, Any],
+    metadata: dict[str, Any],
+    orders: list[dict[str, Any]],
+    radius_override: float | None,
+) -> tuple[ConditionResult, NavigationResult]:
+    radius = radius_override if radius_override is not None else goal.radius_m
+    lat, lng = _number(state.get("lat")), _number(state.get("lng"))
+    same_city = state.get("city") in (None, goal.city)
+    distance = haversine_m(lat, lng, goal.lat, goal.lng) if lat is not None and lng is not None and same_city else None
+    stopped = state.get("stopped") is True
+    within = distance is not None and distance <= radius
+    success = stopped and within
+    notes: list[str] = []
+    if not same_city:
+        notes.append(f"the agent is in {state.get('city')}, the goal in {goal.city}")
+    elif distance is None:
+        notes.append("the final state has no position")
+    if not stopped:
+        notes.append("the agent never stopped (street_stop)")
+    elif not within and distance is not None:
+        notes.append(f"stopped {distance:.0f} m from the goal (radius {radius:g} m)")
+    if goal.must_match_order_store:
+        store_ok, why = order_store_check(goal, metadata, orders)
+        if not store_ok:
+            success = False
+            notes.append(why)
+    shortest, source = shortest_path(goal, metadata)
+    walked = _number(state.get("distance_walked_m"))
+    spl = None
+    if shortest is not None and walked is not None:
+        # Habitat's SPL: success weighted by shortest / max(walked, shortest).
+        spl = (shortest / max(walked, shortest) if max(walked, shortest) > 0 else 1.0) if success else 0.0
+    nav = NavigationResult(
+        goal_node=goal.node,
+        final_node=state.get("node") if isinstance(state.get("node"), str) else None,
+        stopped=stopped,
+        radius_m=radius,
+        distance_to_goal_m=round(distance, 2) if distance is not None else None,
+        within_radius=within,
+        exact_node=state.get("node") == goal.node and same_city,
+        success=success,
+        shortest_path_m=round(shortest, 2) if shortest is not None else None,
+        shortest_path_source=source,  # type: ignore[arg-type]
+        path_length_m=walked,
+        spl=round(spl, 4) if spl is not None else None,
+    )
+    description = f"stop within {radius:g} m of {goal.place_id or goal.node} ({goal.city})"
+    condition = ConditionResult(
+        side="embodied", kind=goal.kind, description=description, met=success,
+        detail={"distance_to_goal_m": nav.distance_to_goal_m, "stopped": stopped, "exact_node": nav.exact_node},
+        note="; ".join(notes) or None,
+    )
+    return condition, nav
