@@ -217,6 +217,7 @@ class EpisodeManager:
                     environment=episode.active,
                     observation=observation.text if observation else (error or ""),
                     counted=counted,
+                    images=episode.recorder.save_images(episode.calls, observation.images) if observation else None,
                 )
                 if counted and episode.status == "running" and episode.steps >= episode.task.step_limit:
                     await self._end(episode, "step_limit", f"step limit of {episode.task.step_limit} reached")

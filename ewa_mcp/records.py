@@ -4,6 +4,7 @@ runs/<run_id>/<episode_id>/
     task.json            the task as it was run (with its oracle and goals)
     trajectory.jsonl     one line per tool call, appended and flushed immediately
     web_events.jsonl     events the embedded sites emitted for this episode (page views, orders, ...)
+    images/              PNG observations of steps that returned images (vision mode, screenshots)
     final_state.json     written once, when the episode ends
 """
 
@@ -62,6 +63,7 @@ class EpisodeRecorder:
         environment: str | None,
         observation: str,
         counted: bool,
+        images: list[str] | None = None,
         extra: dict[str, Any] | None = None,
     ) -> None:
         record = {
@@ -77,9 +79,24 @@ class EpisodeRecorder:
             "counted": counted,
             "observation": digest(observation),
         }
+        if images:
+            record["images"] = images
         if extra:
             record.update(extra)
         self._append(self._trajectory, record)
+
+    def save_images(self, index: int, images: list[bytes]) -> list[str]:
+        """Observation images of one step, as files beside the trajectory (paths relative to the episode)."""
+        if not images:
+            return []
+        folder = self.directory / "images"
+        folder.mkdir(exist_ok=True)
+        names = []
+        for k, png in enumerate(images):
+            name = f"images/step-{index:04d}-{k}.png"
+            (self.directory / name).write_bytes(png)
+            names.append(name)
+        return names
 
     def event(self, event: dict[str, Any]) -> None:
         self._append(self._events, {"time": _now_iso(), "t": time.time(), **event})

@@ -48,7 +48,13 @@ class NoteEnv(CounterEnv):
     name = "browser"
 
     async def observe(self) -> Observation:
-        return Observation(text=f"page {self.value}", data={"page": self.value})
+        import io
+
+        from PIL import Image
+
+        buf = io.BytesIO()
+        Image.new("RGB", (4, 4), (self.value * 40 % 256, 0, 0)).save(buf, format="PNG")
+        return Observation(text=f"page {self.value}", data={"page": self.value}, images=[buf.getvalue()])
 
 
 def register(mcp: MCPServer, episodes) -> None:

@@ -189,3 +189,14 @@ async def test_resources(server):
         assert [json.loads(x)["tool"] for x in r.contents[0].text.splitlines()] == ["start_episode", "counter_add"]
         with pytest.raises(Exception, match="unknown task"):
             await client.read_resource("ewa://tasks/nope")
+
+
+async def test_observation_images_are_returned_and_recorded(server):
+    mcp, _, run = server
+    async with Client(mcp) as client:
+        ep = await start(client, "t-web")
+        r = await client.call_tool("get_observation", {"episode_id": ep})
+        assert [c.type for c in r.content] == ["text", "image"] and r.content[1].mime_type == "image/png"
+    lines = [json.loads(x) for x in (run / ep / "trajectory.jsonl").read_text().splitlines()]
+    assert lines[1]["images"] == ["images/step-0002-0.png"]
+    assert (run / ep / "images" / "step-0002-0.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
