@@ -1,6 +1,7 @@
 """ewa-grade: grade run directories written by ewa-mcp.
 
     ewa-grade RUN_DIR [--format table|json|markdown] [--plots DIR] [--compare RUN_DIR2 ...] [--radius M]
+              [--html OUT]
 
 Exit status: 0 graded (even when some episodes were damaged: they are listed), 2 when a RUN_DIR
 does not exist or holds no episodes, or an option is invalid.
@@ -41,6 +42,10 @@ def build_parser() -> argparse.ArgumentParser:
                         help="more run directories, shown side by side (one column per run)")
     parser.add_argument("--radius", type=_radius, metavar="M",
                         help="arrival radius in metres for every street goal (default: each task's, 25 m)")
+    parser.add_argument("--html", type=Path, metavar="OUT",
+                        help="also write a self-contained HTML trajectory viewer per run (steps, images, grades): "
+                             "OUT is a directory (created if missing) that gets OUT/<run name>.html for each run; "
+                             "with a single run, an OUT ending in .html is the page itself")
     return parser
 
 
@@ -55,8 +60,17 @@ def _labels(paths: list[Path]) -> list[str]:
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     paths = [args.run_dir, *args.compare]
+    labels = _labels(paths)
+    if args.html is not None:
+        from .viewer import ViewerError, output_paths
+
+        try:  # refuse a bad OUT before printing anything
+            output_paths(labels, args.html)
+        except ViewerError as exc:
+            print(f"ewa-grade: {exc}", file=sys.stderr)
+            return 2
     reports: list[RunReport] = []
-    for path, label in zip(paths, _labels(paths)):
+    for path, label in zip(paths, labels):
         try:
             reports.append(grade_run(path, radius_m=args.radius, label=label))
         except RunDirError as exc:
@@ -76,6 +90,16 @@ def main(argv: list[str] | None = None) -> int:
                   file=sys.stderr)
             return 2
         print("plots: " + ", ".join(str(p) for p in written), file=sys.stderr)
+    if args.html is not None:
+        from .viewer import write_html
+
+        try:
+            pages = write_html(reports, args.html)
+        except OSError as exc:
+            print(f"ewa-grade: cannot write the HTML viewer to {args.html} ({exc}); pass a writable directory",
+                  file=sys.stderr)
+            return 2
+        print("html: " + ", ".join(str(p) for p in pages), file=sys.stderr)
     return 0
 
 
