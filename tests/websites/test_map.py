@@ -1,0 +1,193 @@
+"""Map routes through Starlette's TestClient, against the real outdoor world (street graphs + POIs)."""
+
+from __future__ import annotations
+
+import re
+import xml.etree.ElementTree as ET
+from typing import Any
+
+import pytest
+from markupsafe import escape
+from starlette.testclient import TestClient
+
+from ewa_mcp.outdoor.world import get_world
+from ewa_mcp.websites.common import SiteContext
+from ewa_mcp.websites.map.app import create_app
+
+FLATIRON = "poi-manhattan-flatiron-building"
+TARGET = "store-target-herald-square"
+STORES = ["store-wholefoods-union-square", "store-traderjoes-chelsea", "store-target-herald-square",
+          "store-cvs-midtown"]
+
+
+class Sink:
+    def __init__(self) -> None:
+        self.events: list[tuple[str, dict[str, Any]]] = []
+
+    def __call__(self, episode: str, event: dict[str, Any]) -> None:
+        self.events.append((episode, event))
+
+    def of(self, kind: str, episode: str = "ep-1") -> list[dict[str, Any]]:
+        return [e for ep, e in self.events if ep == episode and e["type"] == kind]
+
+
+@pytest.fixture(scope="module")
+def world():
+    return get_world()
+
+
+@pytest.fixture
+def sink() -> Sink:
+    return Sink()
+
+
+@pytest.fixture
+def client(sink: Sink, world) -> TestClient:
+    app = create_app(SiteContext(urls={"home": "http://home.test", "map": "http://map.test"}, emit=sink), world)
+    return TestClient(app, headers={"X-EWA-Episode": "ep-1"})
+
+
+def steps_on_page(html: str) -> list[str]:
+    block = re.search(r'<ol class="steps" aria-label="Turn-by-turn directions">(.*?)</ol>', html, re.S)
+    assert block, "no turn-by-turn list on the page"
+    return [re.sub(r"\s+", " ", s).strip() for s in re.findall(r"<li>(.*?)</li>", block.group(1), re.S)]
+
+
+def page_svg(html: str) -> ET.Element:
+    return ET.fromstring(re.search(r"<svg.*?</svg>", html, re.S).group(0))
+
+
+# ---------------------------------------------------------------- pages and search
+@pytest.mark.parametrize("path", ["/", "/search", "/search?q=Flatiron", f"/place/{FLATIRON}", "/directions"])
+def test_pages_render_and_log_page_views(client, sink, path):
+    r = client.get(path)
+    assert r.status_code == 200 and "<h1" in r.text and "http://home.test/" in r.text
+    assert sink.of("page_view")[-1]["path"] == path.split("?")[0]
+
+
+def test_home_lists_the_cities_and_both_forms(client, world):
+    html = client.get("/").text
+    for city in world.cities:
+        assert world.city(city).name in html or city.title() in html
+    assert 'for="dir-from"' in html and 'for="dir-to"' in html and 'for="map-search-q"' in html
+
+
+def test_search_finds_places_addresses_and_intersections(client, sink, world):
+    html = client.get("/search", params={"q": "Empire State Building"}).text
+    assert 'href="/place/poi-manhattan-empire-state-building"' in html
+    assert sink.of("search") == [{"site": "map", "type": "search", "query": "Empire State Building", "city": None,
+                                  "results": len(world.search("Empire State Building", limit=10))}]
+    node = world.search("5th Ave & W 34th St")[0].id
+    html = client.get("/search", params={"q": "5th Ave & W 34th St"}).text
+    assert f'href="/place/{node}"' in html and "intersection" in html
+    assert "/place/poi-manhattan-empire-state-building" in client.get("/search", params={"q": "350 5th Ave"}).text
+
+
+def test_search_city_filter(client, sink):
+    html = client.get("/search", params={"q": "Central Park", "city": "philadelphia"}).text
+    assert "poi-manhattan-central-park" not in html
+    assert sink.of("search")[-1]["city"] == "philadelphia"
+    r = client.get("/search", params={"q": "park", "city": "atlantis"})
+    assert r.status_code == 400 and "Unknown city" in r.text
+
+
+def test_bad_search_input(client, sink):
+    r = client.get("/search", params={"q": "<img src=x onerror=alert(1)> ' OR 1=1"})
+    assert r.status_code == 200 and "<img src=x" not in r.text and "0 places found" in r.text
+    r = client.get("/search", params={"q": "x" * 201})
+    assert r.status_code == 400 and "too long" in r.text
+    r = client.get("/directions", params={"from": "x" * 201, "to": "Flatiron Building"})
+    assert r.status_code == 400
+    assert not sink.of("directions")
+
+
+def test_place_page_shows_map_facts_but_not_encyclopedia_facts(client, world):
+    place = world.place("poi-manhattan-st-patricks-cathedral")
+    html = client.get(f"/place/{place.id}").text
+    assert str(escape(place.facts["opening_hours"])) in html
+    assert str(place.facts["year_built"]) not in html and place.facts["architect"] not in html  # the wiki's job
+    svg = page_svg(html)
+    assert svg.get("role") == "img" and "St. Patrick" in svg.find("{http://www.w3.org/2000/svg}title").text
+    assert client.get("/place/poi-nowhere").status_code == 404
+
+
+def test_an_intersection_node_has_a_place_page(client, world):
+    node = world.search("5th Ave & W 34th St")[0]
+    html = client.get(f"/place/{node.id}").text
+    assert "5th Avenue" in html and "West 34th Street" in html
+
+
+# ---------------------------------------------------------------- directions
+def test_directions_by_ids_match_the_world_route(client, sink, world):
+    route = world.directions(FLATIRON, TARGET)
+    html = client.get("/directions", params={"from": FLATIRON, "to": TARGET}).text
+    assert steps_on_page(html) == [str(escape(s.instruction)) for s in route.steps]
+    assert f"{round(route.distance_m):,} m" in html
+    assert sink.of("directions") == [{"site": "map", "type": "directions", "origin": FLATIRON,
+                                      "destination": TARGET, "city": "manhattan", "distance_m": route.distance_m}]
+    svg = page_svg(html)
+    ns = "{http://www.w3.org/2000/svg}"
+    assert svg.find(f"{ns}title").text == "Walking route from Flatiron Building to Target Herald Square"
+    route_path = next(p for p in svg.iter(f"{ns}path") if p.get("class") == "route")
+    assert route_path.get("d").count("L") == len(route.nodes) - 1
+    assert [t.text for t in svg.iter(f"{ns}text") if t.text in ("A", "B")] == ["A", "B"]
+
+
+def test_directions_from_free_text(client, sink, world):
+    client.get("/directions", params={"from": "flatiron building", "to": "Target Herald Square"})
+    client.get("/directions", params={"from": "350 5th Ave", "to": "5th Ave & W 23rd St"})
+    corner = world.search("5th Ave & W 23rd St")[0].id
+    got = [(e["origin"], e["destination"]) for e in sink.of("directions")]
+    assert got == [(FLATIRON, TARGET), ("poi-manhattan-empire-state-building", corner)]
+
+
+def test_ambiguous_text_offers_choices_and_shows_no_route(client, sink):
+    html = client.get("/directions", params={"from": "Flatiron", "to": "Target Herald Square"}).text
+    assert "Which start did you mean?" in html
+    assert f"/directions?from={FLATIRON}&amp;to=Target+Herald+Square" in html
+    assert 'class="steps"' not in html and not sink.of("directions")
+
+
+def test_unknown_place_is_a_clear_404(client, sink):
+    r = client.get("/directions", params={"from": "Flatiron Building", "to": "qwertyuiop"})
+    assert r.status_code == 404 and "Destination: no place matches" in r.text and 'role="alert"' in r.text
+    assert not sink.of("directions")
+
+
+def test_places_in_different_cities_are_refused(client, sink):
+    r = client.get("/directions", params={"from": FLATIRON, "to": "Liberty Bell Center"})
+    assert r.status_code == 422 and "same city" in r.text and "Philadelphia" in r.text
+    assert not sink.of("directions")
+
+
+def test_half_filled_form_only_prefills(client, sink):
+    html = client.get("/directions", params={"to": "store-cvs-midtown"}).text
+    assert 'name="to" value="store-cvs-midtown"' in html and 'class="steps"' not in html
+    assert not sink.of("directions")
+
+
+def test_directions_to_place_itself(client):
+    html = client.get("/directions", params={"from": FLATIRON, "to": FLATIRON}).text
+    assert steps_on_page(html) == ["You are already at Flatiron Building."] and "0 m" in html
+
+
+@pytest.mark.parametrize("store_id", STORES)
+def test_every_shop_store_is_reachable(client, world, store_id):
+    html = client.get("/directions", params={"from": "poi-manhattan-empire-state-building", "to": store_id}).text
+    assert steps_on_page(html)[-1].startswith(f"Arrive at {escape(world.place(store_id).name)}")
+
+
+def test_long_route_page_stays_bounded(client, world):
+    route = world.directions("poi-manhattan-dewitt-clinton-park", "poi-manhattan-1-av-station")
+    html = client.get("/directions", params={"from": route.origin, "to": route.destination}).text
+    assert len(steps_on_page(html)) == len(route.steps)
+    svg = page_svg(html)
+    assert float(svg.get("width")) <= 640 and float(svg.get("height")) <= 520
+    assert len(html) < 400_000
+
+
+def test_events_carry_the_episode(sink, world):
+    app = create_app(SiteContext(urls={}, emit=sink), world)
+    TestClient(app, headers={"X-EWA-Episode": "ep-2"}).get("/directions", params={"from": FLATIRON, "to": TARGET})
+    TestClient(app).get("/directions", params={"from": FLATIRON, "to": TARGET})
+    assert [ep for ep, e in sink.events if e["type"] == "directions"] == ["ep-2", "anonymous"]

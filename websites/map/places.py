@@ -1,0 +1,94 @@
+"""The map site's view of the outdoor world: resolve free text to a place, route, and draw streets.
+
+``ewa_mcp.outdoor.world`` owns the street graphs, places and routing; this module only adapts
+them for pages (an origin typed as text, a node id or a place id all become one ``Place``) and
+caches the per-city street segments the SVG map draws.
+"""
+
+from __future__ import annotations
+
+import threading
+from dataclasses import dataclass, field
+from typing import Any
+
+from .svgmap import LatLng, Segment
+
+# Kinds whose search hit comes from parsing the query ("350 5th Ave", "5th Ave & W 34th St"),
+# not from name similarity: one such hit is what the user meant.
+STRUCTURED_KINDS = {"address", "intersection"}
+
+
+@dataclass
+class Resolution:
+    place: Any = None  # ewa_mcp.outdoor.world.Place
+    choices: list[Any] = field(default_factory=list)  # several plausible places: the user picks
+    error: str = ""
+
+
+def _load_world() -> Any:
+    from ewa_mcp.outdoor.world import get_world  # imported late: the street graphs load on first use
+
+    return get_world()
+
+
+class WorldAdapter:
+    def __init__(self, world: Any = None):
+        self._world = world
+        self._lock = threading.Lock()
+        self._segments: dict[str, list[Segment]] = {}
+
+    @property
+    def world(self) -> Any:
+        if self._world is None:
+            with self._lock:
+                if self._world is None:
+                    self._world = _load_world()
+        return self._world
+
+    # ------------------------------------------------------------ cities and places
+    def cities(self) -> list[str]:
+        return list(self.world.cities)
+
+    def city_name(self, city: str) -> str:
+        return self.world.city(city).name
+
+    def place(self, place_or_node_id: str) -> Any | None:
+        """A place by place id or node id (a node reads as its intersection); None if unknown."""
+        return self.world.place(place_or_node_id)
+
+    def search(self, query: str, city: str | None, limit: int) -> list[Any]:
+        return list(self.world.search(query, city=city, limit=limit))
+
+    def resolve(self, text: str) -> Resolution:
+        """Text -> one place: an exact place or node id, else the search's single clear match."""
+        place = self.place(text)
+        if place is not None:
+            return Resolution(place)
+        results = self.search(text, None, 8)
+        if not results:
+            return Resolution(error=f"no place matches {text!r}. Try a place name, a street address such as "
+                                    f"'350 5th Ave', or an intersection such as '5th Ave & W 34th St'.")
+        exact = [p for p in results if p.name.casefold() == text.strip().casefold()]
+        structured = [p for p in results if p.kind in STRUCTURED_KINDS]
+        for candidates in (results, exact, structured):
+            if len(candidates) == 1:
+                return Resolution(candidates[0])
+        return Resolution(choices=results)
+
+    # ------------------------------------------------------------ routing and drawing
+    def directions(self, origin: Any, destination: Any) -> Any:
+        return self.world.directions(origin.id, destination.id)
+
+    def route_coordinates(self, route: Any) -> list[LatLng]:
+        graph = self.world.graph(route.city)
+        return [(graph.nodes[n]["lat"], graph.nodes[n]["lng"]) for n in route.nodes]
+
+    def segments(self, city: str) -> list[Segment]:
+        """Every street segment of the city, cached (the graphs are static)."""
+        if city not in self._segments:
+            graph = self.world.graph(city)
+            pos = {n: (d["lat"], d["lng"]) for n, d in graph.nodes(data=True)}
+            segs = [Segment(pos[a], pos[b], data.get("street", "")) for a, b, data in graph.edges(data=True)]
+            with self._lock:
+                self._segments[city] = segs
+        return self._segments[city]
