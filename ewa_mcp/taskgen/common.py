@@ -1,0 +1,38 @@
+"""Helpers shared by the domain generators."""
+
+from __future__ import annotations
+
+import hashlib
+import random
+from typing import Any
+from urllib.parse import urlencode
+
+from ..taskmodel import ToolCall
+
+
+def rng_for(*parts: Any) -> random.Random:
+    """A random stream that depends only on its parts (stable across runs and Python versions)."""
+    digest = hashlib.sha256(":".join(map(str, parts)).encode()).digest()
+    return random.Random(int.from_bytes(digest[:8], "big"))
+
+
+def call(tool: str, **args: Any) -> ToolCall:
+    return ToolCall(tool=tool, args=args)
+
+
+def ref(role: str, name: str) -> str:
+    """A browser element reference by role and accessible name, resolved when the oracle runs."""
+    return f"{role} '{name}'"
+
+
+def site_url(site: str, path: str, **query: Any) -> str:
+    pairs = [(k, v) for k, v in query.items() if v not in (None, "", [])]
+    flat: list[tuple[str, Any]] = []
+    for k, v in pairs:
+        flat.extend((k, x) for x in v) if isinstance(v, (list, tuple)) else flat.append((k, v))
+    return f"{site}:{path}" + ("?" + urlencode(flat) if flat else "")
+
+
+def step_limit_for(oracle_len: int, slack: int = 15) -> int:
+    """Room for an agent that is less direct than the oracle, but not unbounded."""
+    return max(30, 2 * oracle_len + slack)

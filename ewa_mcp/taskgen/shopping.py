@@ -1,0 +1,194 @@
+"""Shopping tasks: compare products online (price, size, calories, store distance), order one for pickup,
+get directions, and walk to that very store (or walk first, then order)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ..outdoor.world import get_world
+from ..taskmodel import OrderPlaced, ReachedPlace, StartState, StreetStart, Task, TextAnswer, WebStart
+from ..websites.shop import catalog
+from .common import call, ref, rng_for, site_url, step_limit_for
+
+PER_TEMPLATE = 60
+MAX_WALK_M = 2200.0
+
+
+def buy_oracle(product: Any, size: str, store: Any) -> list[Any]:
+    return [call("browser_goto", url=site_url("shop", f"/product/{product.id}")),
+            call("browser_type", element=ref("combobox", "Size"), text=size),
+            call("browser_type", element=ref("combobox", "Store"), text=store.name),
+            call("browser_click", element=ref("button", "Add to cart")),
+            call("browser_goto", url=site_url("shop", "/checkout")),
+            call("browser_click", element=ref("button", "Place order"))]
+
+
+def in_stock(product: Any, size: str, store_id: str) -> bool:
+    try:
+        return catalog.stock(product.id, size, store_id) > 0
+    except catalog.CatalogError:  # that store does not sell it
+        return False
+
+
+class Context:
+    def __init__(self) -> None:
+        self.world = get_world()
+        self.products = [p for p in catalog.load_products() if p.offers]
+        self.stores = {s.id: s for s in catalog.load_stores()}
+        self.store_places = {p.id: p for p in self.world.stores()}
+        # Starting points: Manhattan landmarks and stations within walking range of every store.
+        starts = []
+        for p in sorted(self.world.places.values(), key=lambda p: p.id):
+            if p.city != "manhattan" or p.kind not in ("landmark", "station", "park", "museum"):
+                continue
+            try:
+                dists = [self.world.directions(p.node, s.node).distance_m for s in self.store_places.values()]
+            except ValueError:
+                continue
+            if max(dists) <= MAX_WALK_M:
+                starts.append(p)
+        self.starts = starts
+
+    def walk(self, start: Any, store_id: str) -> Any:
+        return self.world.directions(start.node, self.store_places[store_id].node)
+
+
+def _task(ctx: Context, tid: str, intent: str, start: Any, product: Any, size: str, store_id: str,
+          rng: Any, answer: TextAnswer | None = None, walk_first: bool = False) -> Task:
+    store = ctx.stores[store_id]
+    place = ctx.store_places[store_id]
+    route = ctx.walk(start, store_id)
+    node = ctx.world.node(place.node)
+    web = [*buy_oracle(product, size, store),
+           call("browser_goto", url=site_url("map", "/directions", **{"from": start.name, "to": store_id}))]
+    walk = [call("street_move", neighbour=n) for n in route.nodes[1:]] + [call("street_stop")]
+    finish = call("finish_episode", **({"answer": answer.must_include[0]} if answer else {}))
+    if walk_first:
+        oracle = [call("browser_goto", url=site_url("map", "/directions", **{"from": start.name, "to": store_id})),
+                  call("switch_environment", target="embodied", message="walk to the store"), *walk,
+                  call("switch_environment", target="web", message="order for pickup"),
+                  *buy_oracle(product, size, store), finish]
+    else:
+        oracle = [*web, call("switch_environment", target="embodied", message="walk to the pickup store"), *walk,
+                  finish]
+    links = ctx.world.neighbours(start.node)
+    return Task(
+        id=tid, domain="shopping", intent=intent,
+        start=StartState(environment="embodied" if walk_first else "web", web=WebStart(start_url="shop:/"),
+                         embodied=StreetStart(city="manhattan", node=start.node,
+                                              heading=round(rng.choice([lk.heading for lk in links]), 1))),
+        web_goals=[OrderPlaced(product_id=product.id, size=size, quantity=1, store_id=store_id)],
+        embodied_goals=[ReachedPlace(city="manhattan", node=place.node, lat=node.lat, lng=node.lng,
+                                     place_id=store_id, must_match_order_store=True)],
+        answer=answer,
+        step_limit=step_limit_for(len(oracle), slack=30),
+        oracle=oracle,
+        metadata={"store_nodes": {sid: p.node for sid, p in ctx.store_places.items()},
+                  "shortest_path_m": route.distance_m, "start_lat": ctx.world.node(start.node).lat,
+                  "start_lng": ctx.world.node(start.node).lng, "product_id": product.id, "size": size,
+                  "store_id": store_id, "walk_first": walk_first},
+    )
+
+
+def cheapest_tasks(ctx: Context) -> list[Task]:
+    out = []
+    rng = rng_for("shopping", "cheapest")
+    for attempt in range(PER_TEMPLATE * 10):
+        n = len(out)
+        if n >= PER_TEMPLATE:
+            break
+        product = rng.choice(ctx.products)
+        size = rng.choice(product.sizes).label
+        store_id = catalog.cheapest_store(product.id, size)
+        if not in_stock(product, size, store_id):
+            continue
+        start = rng.choice(ctx.starts)
+        walk_first = n % 4 == 3
+        intent = (f"Buy me a {product.name} ({size}) for pickup at the store that sells it cheapest, "
+                  f"then walk there from {start.name} to pick it up.") if not walk_first else (
+                  f"Walk from {start.name} to the store that sells {product.name} ({size}) cheapest, "
+                  "and order it online for pickup there once you have arrived.")
+        out.append(_task(ctx, f"shopping-cheapest-{n:03d}", intent, start, product, size, store_id, rng,
+                         walk_first=walk_first))
+    return out
+
+
+def size_tasks(ctx: Context) -> list[Task]:
+    out = []
+    rng = rng_for("shopping", "size")
+    candidates = [p for p in ctx.products if len([s for s in p.sizes if s.grams or s.ml]) >= 2]
+    for attempt in range(PER_TEMPLATE * 10):
+        n = len(out)
+        if n >= PER_TEMPLATE:
+            break
+        product = rng.choice(candidates)
+        sizes = sorted([s for s in product.sizes if s.grams or s.ml], key=lambda s: s.grams or s.ml)
+        target = sizes[rng.randrange(1, len(sizes))]
+        below = sizes[sizes.index(target) - 1]
+        amount = (below.grams or below.ml) + max(1, ((target.grams or target.ml) - (below.grams or below.ml)) // 2)
+        unit = "g" if target.grams else "ml"
+        store_id = catalog.cheapest_store(product.id, target.label)
+        if not in_stock(product, target.label, store_id):
+            continue
+        start = rng.choice(ctx.starts)
+        intent = (f"What size of {product.name} should I buy if I need at least {amount} {unit}? Buy the smallest "
+                  f"size that is enough, at the store where that size is cheapest, then walk there from "
+                  f"{start.name}. Tell me the size.")
+        out.append(_task(ctx, f"shopping-size-{n:03d}", intent, start, product, target.label, store_id, rng,
+                         answer=TextAnswer(must_include=[target.label])))
+    return out
+
+
+def calorie_tasks(ctx: Context) -> list[Task]:
+    out = []
+    rng = rng_for("shopping", "calories")
+    foods = [p for p in ctx.products if p.nutrition is not None]
+    for attempt in range(PER_TEMPLATE * 10):
+        n = len(out)
+        if n >= PER_TEMPLATE:
+            break
+        a, b = rng.sample(foods, 2)
+        if a.nutrition.calories == b.nutrition.calories:
+            continue
+        low = a if a.nutrition.calories < b.nutrition.calories else b
+        size = low.sizes[0].label
+        stocked = [sid for sid in ctx.stores if in_stock(low, size, sid)]
+        if not stocked:
+            continue
+        store_id = rng.choice(stocked)
+        start = rng.choice(ctx.starts)
+        intent = (f"How many calories are in {a.name} and {b.name} per serving? I need to select the lower one: "
+                  f"order it ({size}) for pickup at {ctx.stores[store_id].name}, walk there from {start.name}, "
+                  "and tell me its calories per serving.")
+        out.append(_task(ctx, f"shopping-calories-{n:03d}", intent, start, low, size, store_id, rng,
+                         answer=TextAnswer(must_include=[str(low.nutrition.calories)])))
+    return out
+
+
+def nearest_tasks(ctx: Context) -> list[Task]:
+    out = []
+    rng = rng_for("shopping", "nearest")
+    for attempt in range(PER_TEMPLATE * 10):
+        n = len(out)
+        if n >= PER_TEMPLATE:
+            break
+        product = rng.choice(ctx.products)
+        size = rng.choice(product.sizes).label
+        start = rng.choice(ctx.starts)
+        stocked = [sid for sid in ctx.stores if in_stock(product, size, sid)]
+        if not stocked:
+            continue
+        dist = {sid: ctx.walk(start, sid).distance_m for sid in stocked}
+        ranked = sorted(stocked, key=lambda s: dist[s])
+        if len(ranked) > 1 and dist[ranked[1]] - dist[ranked[0]] < 100:
+            continue  # too close to call: the answer must be unambiguous
+        store_id = ranked[0]
+        intent = (f"I am at {start.name}. Buy me a {product.name} ({size}) for pickup at the store closest to me "
+                  "on foot that has it in stock, then walk there.")
+        out.append(_task(ctx, f"shopping-nearest-{n:03d}", intent, start, product, size, store_id, rng))
+    return out
+
+
+def generate() -> list[Task]:
+    ctx = Context()
+    return cheapest_tasks(ctx) + size_tasks(ctx) + calorie_tasks(ctx) + nearest_tasks(ctx)

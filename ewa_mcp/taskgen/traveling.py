@@ -1,0 +1,104 @@
+"""Traveling tasks: walk to a landmark described by its look and address (never its name), identify it,
+look it up on the wiki, and answer a question whose answer is in the wiki."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ..graders.textnorm import contains_phrase
+from ..outdoor.world import get_world
+from ..taskmodel import PageVisited, ReachedPlace, StartState, StreetStart, Task, TextAnswer, WebStart
+from ..websites.wiki import store as wiki
+from .common import call, rng_for, site_url, step_limit_for
+
+TARGET = 130
+MIN_M, MAX_M = 200.0, 1000.0
+QUESTIONS = {
+    "year_built": ("In what year was it built?", lambda v: str(v)),
+    "architect": ("Who was its architect?", lambda v: str(v)),
+    "architectural_style": ("What is its architectural style?", lambda v: str(v)),
+    "height_m": ("How tall is it, in metres?", lambda v: f"{float(v):g}"),
+    "opening_hours": ("When is it open?", lambda v: str(v)),
+}
+
+
+def article_text(article: Any) -> str:
+    return " ".join([article.title, *article.infobox.values(), wiki.plain_text(article.body)])
+
+
+def start_place(world: Any, target: Any, rng: Any) -> tuple[Any, Any] | None:
+    """A nearby street corner to start from, MIN_M..MAX_M away on foot."""
+    graph = world.city(target.city)
+    ids = sorted(graph.ids)
+    for _ in range(60):
+        node_id = rng.choice(ids)
+        node = world.node(node_id)
+        if len(node.streets) < 2:
+            continue
+        try:
+            route = world.directions(node_id, target.node)
+        except ValueError:
+            continue
+        if MIN_M <= route.distance_m <= MAX_M:
+            return world.place(node_id), route
+    return None
+
+
+def generate() -> list[Task]:
+    world = get_world()
+    tasks: list[Task] = []
+    landmarks = sorted((p for p in world.places.values() if p.description_hint and p.kind not in
+                        ("store", "restaurant", "intersection", "address", "station")), key=lambda p: p.id)
+    rng = rng_for("traveling")
+    rng.shuffle(landmarks)
+    rounds = 0
+    while len(tasks) < TARGET and rounds < 3:
+        for target in landmarks:
+            if len(tasks) >= TARGET:
+                break
+            article = wiki.by_poi_id(target.id)
+            if article is None:
+                continue
+            text = article_text(article)
+            answerable = [(k, QUESTIONS[k][0], QUESTIONS[k][1](v)) for k, v in sorted(target.facts.items())
+                          if k in QUESTIONS and contains_phrase(text, QUESTIONS[k][1](v))]
+            if len(answerable) <= rounds:
+                continue  # validation: the answer must be in our wiki
+            key, question, answer = answerable[rounds]
+            trng = rng_for("traveling", target.id, rounds)
+            found = start_place(world, target, trng)
+            if found is None:
+                continue
+            start, route = found
+            corner = start.name.replace(" & ", " and ")
+            intent = (f"You are at the corner of {corner}. Walk to {target.address}: {target.description_hint} "
+                      f"When you are there, look it up on the wiki and answer: {question}")
+            end = world.node(target.node)
+            oracle = [
+                call("browser_goto", url=site_url("map", "/directions", **{"from": start.id, "to": target.id})),
+                call("switch_environment", target="embodied", message="walk to the landmark"),
+                *[call("street_move", neighbour=n) for n in route.nodes[1:]], call("street_stop"),
+                call("switch_environment", target="web", message="look it up"),
+                call("browser_goto", url=site_url("wiki", f"/wiki/{article.slug}")),
+                call("finish_episode", answer=answer),
+            ]
+            links = world.neighbours(start.node)
+            tasks.append(Task(
+                id=f"traveling-{target.city}-{len(tasks):03d}",
+                domain="traveling",
+                intent=intent,
+                start=StartState(environment="web", web=WebStart(start_url="map:/"),
+                                 embodied=StreetStart(city=target.city, node=start.node,
+                                                      heading=round(trng.choice([lk.heading for lk in links]), 1))),
+                web_goals=[PageVisited(site="wiki", path_prefix=f"/wiki/{article.slug}")],
+                embodied_goals=[ReachedPlace(city=target.city, node=target.node, lat=end.lat, lng=end.lng,
+                                             place_id=target.id)],
+                answer=TextAnswer(must_include=[answer]),
+                step_limit=step_limit_for(len(oracle), slack=30),
+                oracle=oracle,
+                metadata={"poi_id": target.id, "article": article.slug, "question": key,
+                          "shortest_path_m": route.distance_m, "start_lat": world.node(start.node).lat,
+                          "start_lng": world.node(start.node).lng},
+            ))
+        rounds += 1
+    return tasks
