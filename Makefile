@@ -7,8 +7,10 @@ STAMP := $(VENV)/.ewa-installed
 
 .PHONY: run test install chromium bench clean
 
+# The main job on the embedded defaults: the oracle plays a deterministic sample of every domain
+# through the real MCP server, then the run is graded and the paper-shaped table printed.
 run: install chromium
-	$(BIN)/ewa-mcp demo
+	$(BIN)/ewa-mcp eval --agent oracle --sample 3 --workers 2
 
 test: install chromium
 	$(BIN)/pytest
