@@ -1,0 +1,308 @@
+"""Writes the wiki articles of the geolocation domain: one per country and one per city.
+
+The articles state the same street-level facts the scenes use (sign language and script,
+shop words, driving side, road markings, plates, telephone area codes, building style,
+trees, local transport, notable streets with their sign text), so an agent can match what
+it sees against them. Facts such as capitals, calling codes and populations come from the
+gazetteer. Cities or countries that already have an article in another group of the wiki
+(e.g. the navigation cities) are not written again; aliases that another article already
+uses are left out of the front matter (graders still accept them).
+
+``write_articles(out_dir)`` returns the number of files written; run it with
+``python -m ewa_mcp.geo.articles``.
+"""
+
+from __future__ import annotations
+
+import json
+import random
+import re
+import unicodedata
+from collections import defaultdict
+from pathlib import Path
+
+from . import gazetteer
+from .cities import CITIES, City
+from .countries import COUNTRIES, Country
+from .languages import SHOP_KINDS, language
+from .locations import LOCATIONS_LIST, Location
+from .plates import colour_name
+from .styles import ARCH, CLIMATE, TREE_WORDS, VEHICLE_WORDS
+
+GROUP = "geo"
+CAPITAL_OVERRIDES = {"KZ": "Astana"}  # the gazetteer still has the 2019-2022 name
+CLIMATE_WORDS = {
+    "oceanic": "oceanic: mild, cloudy and rainy all year",
+    "continental": "continental: warm summers and cold winters",
+    "nordic": "cool: short summers, long dark winters",
+    "mediterranean": "Mediterranean: hot dry summers and mild wet winters",
+    "humid_subtropical": "humid subtropical: hot humid summers, mild winters",
+    "tropical": "tropical: hot and humid all year, with a rainy season",
+    "arid": "desert: hot, dry and dusty",
+    "semi_arid": "semi-arid: sunny and dry, with a short rainy season",
+    "highland": "highland: mild days and cool nights at high altitude",
+}
+
+
+def slugify(title: str) -> str:
+    ascii_text = unicodedata.normalize("NFKD", title).encode("ascii", "ignore").decode("ascii")
+    return "-".join(re.findall(r"[a-z0-9]+", ascii_text.lower()))
+
+
+def _key(text: str) -> str:
+    from ewa_mcp.websites.wiki.store import normalize_title
+
+    return normalize_title(text)
+
+
+def _existing_names(articles_root: Path) -> tuple[set[str], set[str]]:
+    """(title keys, alias keys) of the articles outside the geo group."""
+    from ewa_mcp.websites.wiki.store import read_articles
+
+    titles, aliases = set(), set()
+    articles, _problems = read_articles(articles_root)
+    for article in articles:
+        if article.group == GROUP:
+            continue
+        titles.add(_key(article.title))
+        aliases.update(_key(a) for a in article.aliases)
+    return titles, aliases
+
+
+def country_title(country: Country) -> str:
+    return "Georgia (country)" if country.iso == "GE" else country.name
+
+
+def _front_matter(title: str, category: str, aliases: list[str], infobox: dict[str, str],
+                  coordinates: dict[str, float] | None = None) -> str:
+    lines = ["---", f"title: {title}", f"category: {category}"]
+    if aliases:
+        lines.append(f"aliases: {json.dumps(aliases, ensure_ascii=False)}")
+    lines.append(f"infobox: {json.dumps(infobox, ensure_ascii=False)}")
+    if coordinates:
+        lines.append(f"coordinates: {json.dumps(coordinates)}")
+    lines.append("---")
+    return "\n".join(lines)
+
+
+def _words_line(codes: tuple[str, ...]) -> list[str]:
+    out = []
+    for code in codes:
+        lang = language(code)
+        words = []
+        for kind in SHOP_KINDS:
+            native, latin = lang.words[kind]
+            words.append(native if native == latin else f"{native} ({latin})")
+        out.append(f"- Shop signs in {lang.name} ({lang.script} script): " + ", ".join(words) + ".")
+    return out
+
+
+def _plate_line(country: Country, example_region: str | None) -> str:
+    style = country.plate
+    parts = [f"Number plates are {colour_name(style.bg)} with {colour_name(style.fg)} characters"]
+    if style.rear_bg:
+        parts[0] += f" (rear plates {colour_name(style.rear_bg)})"
+    if style.band:
+        parts.append(f"with a blue band on the left marked {style.band}")
+    if style.caption:
+        parts.append(f"headed '{style.caption}'")
+    example = style.text(random.Random(f"wiki-plate-{country.iso}"), example_region)
+    caption = style.caption_text(example_region)
+    shown = f"{caption}: {example}" if caption and style.region_caption else example
+    return "- " + ", ".join(parts) + f"; for example '{shown}'."
+
+
+def local_area_code(city: City) -> str | None:
+    """The area code as local numbers show it: with the trunk prefix the country's format
+    puts before it ("0" + "31" in Chattogram -> "031")."""
+    if not city.area_code:
+        return None
+    template = COUNTRIES[city.iso].phone
+    before = template.split("{a}")[0] if "{a}" in template else ""
+    prefix = before[-1] if before[-1:].isdigit() else ""
+    return prefix + city.area_code
+
+
+def _fmt_int(value: int | float | str) -> str:
+    try:
+        return f"{int(value):,}"
+    except (TypeError, ValueError):
+        return str(value)
+
+
+def country_article(country: Country, cities: list[City], names: dict[str, str], aliases: list[str],
+                    extra: list[str]) -> str:
+    record = gazetteer.countries()[country.iso]
+    continent = gazetteer.country_continent(country.iso)
+    capital = CAPITAL_OVERRIDES.get(country.iso, record["capital"])
+    phone = record["phone"] if str(record["phone"]).startswith("+") else f"+{record['phone']}"
+    infobox = {
+        "Capital": capital,
+        "Continent": continent,
+        "Official languages": country.official_languages or ", ".join(language(c).name for c in country.langs),
+        "Scripts": country.scripts,
+        "Drives on the": country.drive,
+        "Calling code": phone,
+        "Currency": f"{record['currencyname']} ({record['currencycode']})",
+        "Population": _fmt_int(record["population"]),
+        "Area": f"{_fmt_int(record['areakm2'])} km²",
+        "Internet domain": record["tld"],
+        "ISO code": f"{country.iso} / {record['iso3']}",
+    }
+    title = country_title(country)
+    arch = ARCH[country.arch]
+    example_region = next((c.plate_region for c in cities if c.plate_region), None)
+    capital_ref = f"[[{capital}]]" if _key(capital) in names else capital
+    body = [f"**{title}** is a country in {continent}. Its capital is {capital_ref}."]
+    body.append("## Street-level clues")
+    body += _words_line(country.langs)
+    body.append(f"- Traffic drives on the **{country.drive}**.")
+    body.append(f"- The centre line of two-way streets is {country.centre_line}"
+                + (f"; road edges are marked in {country.edge_line}." if country.edge_line != "white" else "."))
+    body.append(_plate_line(country, example_region))
+    body.append(f"- Typical city streets: {arch.description}.")
+    body += [f"- {fact}" for fact in country.facts]
+    others = [c for c in cities if _key(c.name) != _key(title)]
+    if others:
+        body.append("## Cities")
+        for city in sorted(others, key=lambda c: c.name):
+            body.append(f"- [[{city.name}]]")
+    body += extra
+    return _front_matter(title, "Countries", aliases, infobox) + "\n" + "\n\n".join(_paragraphs(body)) + "\n"
+
+
+def _paragraphs(lines: list[str]) -> list[str]:
+    """Join consecutive list items into one block; other lines are paragraphs of their own."""
+    blocks: list[str] = []
+    for line in lines:
+        if line.startswith("- ") and blocks and blocks[-1].startswith("- "):
+            blocks[-1] += "\n" + line
+        else:
+            blocks.append(line)
+    return blocks
+
+
+def _city_sections(city: City, locations: list[Location]) -> list[str]:
+    country = COUNTRIES[city.iso]
+    arch = ARCH[city.arch or country.arch]
+    climate = CLIMATE[city.climate]
+    body = ["## Street-level clues"]
+    if city.langs:
+        body += _words_line(city.langs)
+    body.append(f"- Buildings: {arch.description}.")
+    trees = city.trees or climate.trees
+    body.append("- Street trees: " + ", ".join(TREE_WORDS[t] for t in trees) + ".")
+    body.append(f"- Climate: {CLIMATE_WORDS[city.climate]}.")
+    for feature in city.transport:
+        kind, _, colour = feature.partition(":")
+        body.append("- Often seen: " + VEHICLE_WORDS[kind].format(colour=colour) + ".")
+    if city.area_code:
+        body.append(f"- Local telephone numbers carry the area code {local_area_code(city)} "
+                    f"(country calling code +{str(gazetteer.countries()[city.iso]['phone']).lstrip('+')}).")
+    if city.places or locations:
+        body.append("## Notable streets and squares")
+        for place, looks in city.places.items():
+            body.append(f"- **{place}**: {looks}.")
+        for loc in locations:
+            if loc.street in city.places:
+                continue
+            sign = " / ".join(loc.sign)
+            also = f"; also called {', '.join(loc.street_aliases[:3])}" if loc.street_aliases else ""
+            body.append(f"- **{loc.street}** (street signs read \"{sign}\"{also}).")
+    return body
+
+
+def city_article(city: City, locations: list[Location], aliases: list[str]) -> str:
+    record = gazetteer.city(city.geonameid)
+    country = COUNTRIES[city.iso]
+    ctitle = country_title(country)
+    infobox = {
+        "Country": ctitle,
+        "Continent": locations[0].continent if locations and locations[0].continent
+        else gazetteer.country_continent(city.iso),
+        "Population": _fmt_int(record["population"]),
+        "Coordinates": f"{record['latitude']:.4f}, {record['longitude']:.4f}",
+        "Time zone": record["timezone"],
+        "Climate": CLIMATE_WORDS[city.climate].split(":")[0].capitalize(),
+    }
+    if city.area_code:
+        infobox["Telephone area code"] = local_area_code(city) or ""
+    if city.plate_region:
+        infobox["Number plate code"] = city.plate_region.replace("#", "").replace("@", "").strip(" -")
+    body = [f"**{city.name}** is a city in [[{ctitle}]]. {city.about}", *_city_sections(city, locations)]
+    coordinates = {"lat": round(record["latitude"], 4), "lng": round(record["longitude"], 4)}
+    return (_front_matter(city.name, "Cities", aliases, infobox, coordinates) + "\n"
+            + "\n\n".join(_paragraphs(body)) + "\n")
+
+
+def write_articles(out_dir: Path, articles_root: Path | None = None) -> int:
+    """Write the geo articles into ``out_dir`` (normally websites/wiki/articles/geo)."""
+    root = articles_root or out_dir.parent
+    taken_titles, taken_aliases = _existing_names(root)
+    by_city: dict[str, list[Location]] = defaultdict(list)
+    for loc in LOCATIONS_LIST:
+        by_city[loc.city_key].append(loc)
+    cities_by_country: dict[str, list[City]] = defaultdict(list)
+    for key in by_city:
+        cities_by_country[CITIES[key].iso].append(CITIES[key])
+
+    # Titles this writer will create, to decide links and drop clashing aliases.
+    planned: dict[str, str] = {}
+    for iso in cities_by_country:
+        planned[_key(country_title(COUNTRIES[iso]))] = country_title(COUNTRIES[iso])
+    for key in by_city:
+        title = CITIES[key].name
+        if _key(title) not in planned:
+            planned[_key(title)] = title
+    names = dict(planned)
+    names.update({t: t for t in taken_titles})
+    blocked = set(names) | taken_aliases
+
+    used_aliases: set[str] = set()
+
+    def free_aliases(candidates: tuple[str, ...], title: str) -> list[str]:
+        # An alias another article already uses as title or alias would make lookups ambiguous.
+        out = []
+        for alias in candidates:
+            key = _key(alias)
+            if key and key != _key(title) and key not in blocked and key not in used_aliases:
+                out.append(alias)
+                used_aliases.add(key)
+        return out
+
+    out_dir.mkdir(parents=True, exist_ok=True)
+    written = 0
+    files: dict[str, str] = {}
+    for iso in sorted(cities_by_country):
+        country = COUNTRIES[iso]
+        title = country_title(country)
+        if _key(title) in taken_titles:
+            continue
+        # A city-state (Singapore, Hong Kong) shares its country's article.
+        extra: list[str] = []
+        same = [c for c in cities_by_country[iso] if _key(c.name) == _key(title)]
+        for city in same:
+            extra += ["## The city", city.about, *_city_sections(city, by_city[city.key])]
+        cand = tuple(country.aliases) + tuple(a for c in same for a in c.aliases)
+        if iso == "GE":
+            cand = ("Georgia",) + cand
+        files[slugify(title)] = country_article(country, cities_by_country[iso], names, free_aliases(cand, title),
+                                                extra)
+    for key in sorted(by_city):
+        city = CITIES[key]
+        if _key(city.name) in taken_titles or _key(city.name) == _key(country_title(COUNTRIES[city.iso])):
+            continue  # an existing article (or the country of the same name) covers it
+        files[slugify(city.name)] = city_article(city, by_city[key], free_aliases(city.aliases, city.name))
+    for path in out_dir.glob("*.md"):
+        if path.stem not in files:
+            path.unlink()  # a location set that shrank leaves no stale articles behind
+    for slug, text in sorted(files.items()):
+        (out_dir / f"{slug}.md").write_text(text, encoding="utf-8")
+        written += 1
+    return written
+
+
+if __name__ == "__main__":
+    from ewa_mcp.websites.wiki.store import ARTICLES_DIR
+
+    print(f"wrote {write_articles(ARTICLES_DIR / GROUP)} geolocation articles")

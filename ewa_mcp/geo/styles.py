@@ -1,0 +1,226 @@
+"""Visual vocabularies shared by the renderer and the text describer: building styles,
+climates (sky and trees) and vehicles. Descriptions use plain visual words and never a
+place name ("plane trees", not "London planes")."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class ArchStyle:
+    palette: tuple[str, ...]  # facade colours
+    floors: tuple[int, int]  # min, max storeys
+    roof: str  # mansard, pitched, flat, gabled, curved_tile
+    description: str
+    window: str = "square"  # tall, square, arched, strip, shuttered, glass
+    balconies: bool = False
+    awnings: bool = False
+    veranda: bool = False  # covered walkway on posts over the pavement
+    arcade: bool = False  # arched ground-floor arcade
+    wires: bool = False  # dense overhead cables on poles
+    vertical_signs: bool = False
+    ac_units: bool = False
+    roof_colour: str = "#6b6b6b"
+    pavement: str = "#b9b4aa"
+
+
+ARCH: dict[str, ArchStyle] = {
+    "haussmann": ArchStyle(("#e8dcc0", "#e3d5b5", "#ece2cb"), (5, 7), "mansard",
+                           "cream limestone apartment buildings of six or seven storeys with long wrought-iron "
+                           "balconies and grey zinc mansard roofs with dormers", window="tall", balconies=True,
+                           awnings=True,
+                           roof_colour="#5f6b73"),
+    "central_european": ArchStyle(("#e9d8a6", "#d8c3a5", "#c9d6c2", "#e3c7b8", "#f0e6d2"), (4, 5), "pitched",
+                                  "four- and five-storey pastel-plastered buildings with ornate stucco window "
+                                  "frames and steep tiled roofs", roof_colour="#9c4a32"),
+    "nordic": ArchStyle(("#d9a35f", "#b5493a", "#e6d3a8", "#7a8f6a", "#c9c1b0"), (4, 6), "gabled",
+                        "narrow colourful plastered and brick buildings with tall windows and steep gables",
+                        roof_colour="#3e3e44"),
+    "british": ArchStyle(("#9b4a35", "#a6583f", "#d8cfc0", "#8c3f2f"), (3, 5), "pitched",
+                         "terraced brick buildings of three or four storeys with white sash windows, chimney pots "
+                         "and painted shopfronts with fascia boards", roof_colour="#4b4f57"),
+    "stone_terrace": ArchStyle(("#a49a88", "#8f8676", "#b3aa98"), (4, 5), "pitched",
+                               "tall grey sandstone terraces, soot-darkened, with sash windows and chimney stacks",
+                               roof_colour="#3f434a"),
+    "mediterranean": ArchStyle(("#e7b98a", "#d9895b", "#f0d39b", "#e8cfa8", "#c96f4a"), (3, 6), "pitched",
+                               "ochre, terracotta and pale yellow stuccoed buildings with green wooden shutters, "
+                               "small balconies and terracotta roof tiles", balconies=True, awnings=True,
+                               roof_colour="#b5542f"),
+    "iberian": ArchStyle(("#2f6fae", "#e9d9a0", "#d5e4ef", "#f2eee4", "#e3a27a"), (3, 5), "pitched",
+                         "three- to five-storey buildings, some faced with glazed blue-and-white tiles, with "
+                         "wrought-iron balconies; the pavement is a mosaic of small black and white stones",
+                         balconies=True, roof_colour="#b5542f", pavement="#dcd8cc"),
+    "modernist": ArchStyle(("#c9c9c4", "#8e9aa3", "#b3b0a6", "#6e7b85"), (6, 14), "flat",
+                           "post-war modernist office and apartment blocks of concrete and glass", window="strip"),
+    "soviet": ArchStyle(("#d6c7a7", "#c2b49a", "#a9a39a", "#e0d4bd"), (5, 9), "flat",
+                        "massive neoclassical apartment blocks of beige stone and stucco with heavy cornices, and "
+                        "plain concrete blocks further on", roof_colour="#7a776f"),
+    "ottoman": ArchStyle(("#d9c6a5", "#c98f6a", "#e6dccb", "#b7a48a"), (3, 6), "flat",
+                         "late-19th-century stone buildings with bay windows and cast-iron balconies, some with "
+                         "projecting upper floors", balconies=True),
+    "tuff": ArchStyle(("#d49a8c", "#c98b7c", "#dcae9f", "#b97c6f"), (4, 6), "flat",
+                      "four- to six-storey buildings built of pinkish volcanic stone blocks with carved "
+                      "ornaments"),
+    "east_asian": ArchStyle(("#d8d5cc", "#b9b7b0", "#e6e1d4", "#9aa0a6"), (4, 9), "flat",
+                            "narrow tiled and concrete buildings of many storeys packed side by side, with "
+                            "vertical signboards stacked up their fronts", wires=True, vertical_signs=True,
+                            window="strip"),
+    "machiya": ArchStyle(("#5a4632", "#6b5440", "#4a3b2c"), (2, 2), "curved_tile",
+                         "low two-storey dark wooden townhouses with slatted lattice fronts and grey tiled roofs",
+                         wires=True, roof_colour="#4a4d52", window="square"),
+    "chinese_modern": ArchStyle(("#cfcac0", "#b8b9b5", "#e1ddd2", "#a7b2bb"), (6, 20), "flat",
+                                "tall concrete and glass towers above shops with big illuminated red and gold "
+                                "signboards", vertical_signs=True, ac_units=True, window="strip"),
+    "shophouse": ArchStyle(("#e3c77a", "#9cc3b5", "#e8b4a0", "#f1e4c3", "#c6d7a8"), (2, 4), "flat",
+                           "two- to four-storey shophouses with covered five-foot walkways in front, shutters, "
+                           "air-conditioner units and signboards across the facades", arcade=True, wires=True,
+                           ac_units=True, window="shuttered"),
+    "south_asian": ArchStyle(("#e8d9b0", "#cfd8c4", "#e2b99a", "#d4c6b8", "#f0e2a8"), (3, 6), "flat",
+                             "weathered concrete buildings of three to six storeys covered with painted signboards "
+                             "and hoardings, with balconies and tangled overhead cables", balconies=True, wires=True,
+                             ac_units=True, window="square"),
+    "colonial_south_asian": ArchStyle(("#c9b79a", "#b8a58a", "#d9c9a8"), (3, 5), "pitched",
+                                      "grand Victorian Gothic and Art Deco stone buildings with arcades and "
+                                      "balconies", arcade=True, balconies=True, window="arched"),
+    "middle_eastern": ArchStyle(("#e4d6b8", "#d9c8a4", "#efe6d3", "#cdbb98"), (3, 7), "flat",
+                                "flat-roofed buildings of pale limestone and render with small balconies, "
+                                "air-conditioner units and rooftop water tanks", balconies=True, ac_units=True,
+                                window="square"),
+    "bauhaus": ArchStyle(("#f2f0ea", "#ebe8df", "#e6e3da"), (3, 4), "flat",
+                         "white rounded-corner apartment blocks of three or four storeys with long horizontal "
+                         "balconies and strip windows, on pilotis", balconies=True, window="strip"),
+    "gulf_modern": ArchStyle(("#b9c7d3", "#8fa7bb", "#d8d2c4", "#6f8aa3"), (15, 40), "flat",
+                             "glass and steel skyscrapers along a very wide multi-lane road", window="glass"),
+    "north_african": ArchStyle(("#c8704a", "#d2825a", "#bf6a45", "#e0a77b"), (2, 4), "flat",
+                               "low flat-roofed buildings with ochre-red walls, small windows and carved wooden "
+                               "doors", window="arched", roof_colour="#b0603e"),
+    "french_colonial": ArchStyle(("#f2f0ea", "#ece6d8", "#e9e4dc"), (4, 6), "flat",
+                                 "white art-deco and Haussmann-style buildings with ornate balconies, blue or green "
+                                 "shutters and arcades", balconies=True, arcade=True, window="shuttered"),
+    "african_urban": ArchStyle(("#e6d5a8", "#d9c0a0", "#c4d4c2", "#efe0c4", "#d7b48a"), (2, 6), "flat",
+                               "two- to six-storey concrete buildings with painted walls, shop signs and "
+                               "advertisements, some modernist office blocks and corrugated-iron awnings",
+                               awnings=True, window="square"),
+    "latin_colonial": ArchStyle(("#e8b04f", "#4f8fbf", "#e07a5f", "#f2e2ba", "#8fbf7f"), (1, 3), "flat",
+                                "one- and two-storey colonial buildings painted in bright colours, with tall "
+                                "windows behind wrought-iron grilles and wooden balconies", balconies=True,
+                                window="tall"),
+    "latin_modern": ArchStyle(("#d8d2c4", "#c4c9cc", "#e4dccb", "#b0b8bc"), (6, 20), "flat",
+                              "mid-rise concrete apartment towers with balconies and security grilles above "
+                              "street-level shops", balconies=True, wires=True, window="square"),
+    "creole": ArchStyle(("#e8b3a3", "#a9c8d8", "#f1dd9c", "#b9d3a6"), (2, 3), "pitched",
+                        "two- and three-storey pastel townhouses with lacy cast-iron galleries and hanging ferns",
+                        balconies=True, window="tall"),
+    "na_downtown": ArchStyle(("#9c5a45", "#b9b3a8", "#7d8c99", "#c7c0b0"), (5, 30), "flat",
+                             "brick and stone buildings with metal fire escapes next to glass office towers",
+                             window="square"),
+    "australasian": ArchStyle(("#d8c8a8", "#b9876a", "#e4e0d6", "#9eb3bf"), (2, 12), "flat",
+                              "Victorian shopfronts with verandas on posts over the footpath next to modern office "
+                              "towers", veranda=True, window="tall"),
+    "pacific": ArchStyle(("#f0ead8", "#b8d8c8", "#e8c89a", "#c8d8e8"), (1, 3), "pitched",
+                         "low timber and concrete buildings with corrugated-iron roofs and verandas",
+                         veranda=True, roof_colour="#8a8f96", window="square"),
+}
+
+
+@dataclass(frozen=True)
+class Climate:
+    sky_top: str
+    sky_bottom: str
+    clouds: int  # how many clouds to draw
+    trees: tuple[str, ...]
+    sky_words: str
+    ground_tint: str = "#7a7a78"  # asphalt
+
+
+CLIMATE: dict[str, Climate] = {
+    "oceanic": Climate("#8fa9c4", "#d6dde4", 5, ("plane", "linden", "maple"), "a soft grey-blue sky with many "
+                                                                              "clouds"),
+    "continental": Climate("#6f9fd0", "#cfe0ee", 3, ("linden", "chestnut", "maple"), "a clear blue sky with a few "
+                                                                                      "clouds"),
+    "nordic": Climate("#9db3c7", "#e3e8ec", 4, ("birch", "spruce", "linden"), "a pale, low-sun northern sky"),
+    "mediterranean": Climate("#4d8fd6", "#bcd8f0", 1, ("plane", "umbrella_pine", "cypress", "palm"),
+                             "a deep blue, almost cloudless sky"),
+    "humid_subtropical": Climate("#7fa8cf", "#dfe6e8", 3, ("plane", "camphor", "palm"), "a hazy, humid sky"),
+    "tropical": Climate("#3f8ed8", "#cfe6f5", 4, ("coconut_palm", "banana", "rain_tree", "frangipani"),
+                        "a bright blue sky with towering white cumulus clouds"),
+    "arid": Climate("#9bbfd9", "#efe3c8", 0, ("date_palm", "acacia"), "a pale, dusty sky over sand-coloured haze",
+                    ground_tint="#8a8476"),
+    "semi_arid": Climate("#78a9d6", "#e8e0cc", 1, ("acacia", "jacaranda", "eucalyptus", "pepper_tree"),
+                         "a dry, bright blue sky"),
+    "highland": Climate("#4f86c6", "#d4e2ee", 2, ("eucalyptus", "pine", "jacaranda"), "a thin, intensely blue "
+                                                                                      "high-altitude sky with "
+                                                                                      "mountains on the horizon"),
+}
+
+TREE_WORDS: dict[str, str] = {
+    "plane": "broad plane trees with mottled bark",
+    "linden": "rounded linden trees",
+    "maple": "leafy maples",
+    "chestnut": "horse chestnut trees",
+    "birch": "white-barked birches",
+    "spruce": "dark conical spruces",
+    "umbrella_pine": "umbrella pines with flat, spreading crowns",
+    "cypress": "tall narrow cypresses",
+    "palm": "palm trees",
+    "fan_palm": "very tall thin fan palms",
+    "camphor": "dense evergreen camphor trees",
+    "coconut_palm": "leaning coconut palms",
+    "banana": "banana plants with huge leaves",
+    "rain_tree": "wide-spreading rain trees",
+    "frangipani": "frangipani trees with white flowers",
+    "date_palm": "straight-trunked date palms",
+    "acacia": "flat-topped acacias",
+    "jacaranda": "jacaranda trees in purple bloom",
+    "eucalyptus": "tall eucalyptus trees with peeling bark",
+    "pepper_tree": "weeping pepper trees",
+    "pine": "pines",
+    "ginkgo": "ginkgo trees with fan-shaped leaves",
+    "zelkova": "zelkova trees",
+    "willow": "weeping willows",
+    "locust": "pagoda trees",
+    "banyan": "banyan trees with hanging aerial roots",
+    "orange": "orange trees heavy with fruit",
+    "olive": "silvery olive trees",
+    "fig": "huge fig trees",
+    "araucaria": "tall candelabra-shaped araucaria pines",
+    "flamboyant": "flame trees with red blossoms",
+}
+
+# How each kind of city vehicle looks; colour comes from the "kind:colour" feature.
+VEHICLE_WORDS: dict[str, str] = {
+    "tram": "a {colour} tram on rails",
+    "double_decker": "a {colour} double-decker bus",
+    "taxi": "a {colour} taxi",
+    "minibus": "a {colour} minibus taxi crowded with passengers",
+    "matatu": "a brightly painted minibus covered in graffiti-style art",
+    "tuk_tuk": "a three-wheeled motor rickshaw (tuk-tuk)",
+    "auto_rickshaw": "a {colour} three-wheeled auto-rickshaw",
+    "cycle_rickshaw": "a pedal cycle rickshaw with a decorated hood",
+    "becak": "a pedal rickshaw with the passenger seat in front",
+    "motorbikes": "dozens of motor scooters",
+    "boda_boda": "a swarm of motorbike taxis",
+    "jeepney": "a long, chrome-decorated, brightly painted jeep-like minibus",
+    "songthaew": "a {colour} pick-up truck with benches in the back serving as a shared taxi",
+    "classic_car": "a 1950s car with tail fins and chrome, in bright paint",
+    "chicken_bus": "a brightly repainted old school bus",
+    "painted_bus": "a bus covered with ornate painted decorations and chrome",
+    "trolleybus": "a {colour} trolleybus under overhead wires",
+    "skytrain": "an elevated railway viaduct on concrete pillars above the road",
+    "bicycles": "many people riding upright bicycles on a red cycle path",
+}
+
+COLOUR_HEX: dict[str, str] = {
+    "yellow": "#f2c200", "red": "#c62828", "blue": "#1f5fb0", "green": "#2e7d32", "white": "#f2f2f2",
+    "black": "#222222", "orange": "#ef7d1a", "pink": "#e36a9c", "beige": "#d9c8a0", "silver": "#b8bcc0",
+    "grey": "#8a8f96",
+}
+
+
+def colour_hex(words: str) -> str:
+    """The first colour word in a phrase ("black and yellow" -> black)."""
+    for word in words.replace("-", " ").split():
+        if word in COLOUR_HEX:
+            return COLOUR_HEX[word]
+    return "#c9c9c9"

@@ -1,0 +1,169 @@
+"""Geolocation grading: alias matching per level (including the reference implementation's
+failure cases), distance bands at their edges, the score, and the Table-3 aggregation."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from ewa_mcp.graders.geo import (
+    BANDS_KM,
+    aggregate_geolocation,
+    distance_bands,
+    geoguessr_score,
+    grade_geolocation,
+    render_geolocation_table,
+)
+
+from ewa_mcp.geo.geometry import destination, haversine_km
+from ewa_mcp.geo.names import countries_match, resolve_continent, resolve_country, street_core, streets_match
+from ewa_mcp.taskmodel import GeoAnswer
+
+ABIDJAN = GeoAnswer(lat=5.3225, lng=-4.0185, continent="Africa", country="Ivory Coast", city="Abidjan",
+                    street="Boulevard de la République")
+DELHI = GeoAnswer(lat=28.6240, lng=77.2190, continent="Asia", country="India", city="New Delhi", street="Janpath")
+CHATTOGRAM = GeoAnswer(lat=22.3600, lng=91.8215, continent="Asia", country="Bangladesh", city="Chattogram",
+                       street="CDA Avenue")
+NEVSKY = GeoAnswer(lat=59.9340, lng=30.3350, continent="Europe", country="Russia", city="Saint Petersburg",
+                   street="Nevsky Prospect")
+
+
+def submit(truth: GeoAnswer, **changes) -> dict:
+    base = {"lat": truth.lat, "lng": truth.lng, "continent": truth.continent, "country": truth.country,
+            "city": truth.city, "street": truth.street}
+    return {**base, **changes}
+
+
+# ------------------------------------------------------------------ the reference's failure cases
+@pytest.mark.parametrize("country", ["Côte d'Ivoire", "Cote d'Ivoire", "cote divoire", "Ivory Coast", "CI", "CIV",
+                                     "the Ivory Coast"])
+def test_ivory_coast_names_all_match(country):
+    assert grade_geolocation(ABIDJAN, submit(ABIDJAN, country=country))["country"] is True
+
+
+@pytest.mark.parametrize("city", ["Delhi", "New Delhi", "NEW DELHI", "Dilli", "नई दिल्ली"])
+def test_delhi_and_new_delhi_match(city):
+    assert grade_geolocation(DELHI, submit(DELHI, city=city))["city"] is True
+
+
+@pytest.mark.parametrize("city", ["Chittagong", "Chattogram", "Chottogram"])
+def test_chittagong_and_chattogram_match(city):
+    assert grade_geolocation(CHATTOGRAM, submit(CHATTOGRAM, city=city))["city"] is True
+
+
+def test_truth_given_under_an_exonym_still_matches_the_local_name():
+    truth = ABIDJAN.model_copy(update={"country": "Côte d'Ivoire"})
+    assert grade_geolocation(truth, submit(truth, country="Ivory Coast"))["country"] is True
+
+
+def test_wrong_answers_at_each_level_fail_only_that_level():
+    result = grade_geolocation(DELHI, submit(DELHI, city="Mumbai"))
+    assert result["city"] is False and result["country"] is True and result["all_levels"] is False
+    assert grade_geolocation(DELHI, submit(DELHI, country="Pakistan"))["country"] is False
+    assert grade_geolocation(DELHI, submit(DELHI, continent="Africa"))["continent"] is False
+    assert grade_geolocation(DELHI, submit(DELHI, street="Rajpath"))["street"] is False
+    # A neighbouring country or a country name as a city is not accepted either.
+    assert grade_geolocation(CHATTOGRAM, submit(CHATTOGRAM, city="Dhaka"))["city"] is False
+    assert grade_geolocation(ABIDJAN, submit(ABIDJAN, country="Ghana"))["country"] is False
+
+
+def test_city_names_from_the_gazetteer_and_hand_aliases():
+    assert grade_geolocation(NEVSKY, submit(NEVSKY, city="St. Petersburg"))["city"]
+    assert grade_geolocation(NEVSKY, submit(NEVSKY, city="Санкт-Петербург"))["city"]
+    kyiv = GeoAnswer(lat=50.447, lng=30.522, continent="Europe", country="Ukraine", city="Kyiv", street="Khreshchatyk")
+    assert grade_geolocation(kyiv, submit(kyiv, city="Kiev"))["city"]
+    bengaluru = GeoAnswer(lat=12.9755, lng=77.607, continent="Asia", country="India", city="Bengaluru",
+                          street="Mahatma Gandhi Road")
+    assert grade_geolocation(bengaluru, submit(bengaluru, city="Bangalore"))["city"]
+    assert grade_geolocation(bengaluru, submit(bengaluru, street="MG Road"))["street"]
+
+
+def test_street_matching_uses_local_script_aliases_and_type_words():
+    assert grade_geolocation(NEVSKY, submit(NEVSKY, street="Невский проспект"))["street"]
+    assert grade_geolocation(NEVSKY, submit(NEVSKY, street="Nevsky Prospekt"))["street"]
+    assert grade_geolocation(NEVSKY, submit(NEVSKY, street="nevsky avenue"))["street"]  # same core, other type word
+    assert not grade_geolocation(NEVSKY, submit(NEVSKY, street="Liteyny Prospekt"))["street"]
+    # Other lines of a street sign (district, postcode) are not the street's name.
+    rio = GeoAnswer(lat=-22.97, lng=-43.1855, continent="South America", country="Brazil", city="Rio de Janeiro",
+                    street="Avenida Atlântica")
+    assert not grade_geolocation(rio, submit(rio, street="Copacabana"))["street"]
+    assert grade_geolocation(rio, submit(rio, street="Av. Atlantica"))["street"]
+    assert streets_match("Friedrichstrasse", "Friedrichstraße")
+    assert streets_match("Rue de Rivoli", "Rivoli Street")
+    assert streets_match("SW 8th St", "Southwest 8 Street") is False  # "southwest" is not a type word
+    assert streets_match("Pike St.", "Pike Street")
+    assert street_core("Rue Sainte-Catherine") == street_core("St. Catherine Street") == ("saint", "catherine")
+    assert not streets_match("Street", "Main Street")  # an empty core never matches a real name
+
+
+def test_continents_accept_codes_and_debated_cases():
+    assert resolve_continent("EU") == "Europe" and resolve_continent("north america") == "North America"
+    assert resolve_continent("Australia") == "Oceania"
+    assert resolve_continent("eu") is None  # lower-case two letters are not codes
+    istanbul = GeoAnswer(lat=41.034, lng=28.978, continent="Europe", country="Turkey", city="Istanbul",
+                         street="İstiklal Avenue")
+    assert grade_geolocation(istanbul, submit(istanbul, continent="Asia"))["continent"]
+    assert not grade_geolocation(NEVSKY, submit(NEVSKY, continent="Asia"))["continent"]
+
+
+def test_country_codes_only_in_capitals_and_territories():
+    assert resolve_country("NO") == frozenset({"NO"})
+    assert resolve_country("no") == frozenset()
+    assert countries_match("China", "Hong Kong") and not countries_match("Hong Kong", "China")
+    assert countries_match("Scotland", "United Kingdom") and countries_match("Holland", "The Netherlands")
+    assert countries_match("Congo", "Democratic Republic of the Congo")
+
+
+def test_missing_submission_scores_nothing():
+    result = grade_geolocation(DELHI, None)
+    assert result["all_levels"] is False and result["distance_km"] is None and result["score"] == 0
+    assert not any(result["bands"].values()) and result["submitted"] is False
+
+
+# ------------------------------------------------------------------ distance
+@pytest.mark.parametrize("band", list(BANDS_KM))
+def test_distance_bands_at_their_edges(band):
+    limit = BANDS_KM[band]
+    for km, inside in ((limit * 0.999, True), (limit * 1.001, False)):
+        lat, lng = destination(DELHI.lat, DELHI.lng, 37.0, km)
+        assert math.isclose(haversine_km(DELHI.lat, DELHI.lng, lat, lng), km, rel_tol=1e-9)
+        result = grade_geolocation(DELHI, submit(DELHI, lat=lat, lng=lng))
+        assert result["bands"][band] is inside, (band, km)
+    assert distance_bands(limit)[band] is True  # the edge itself is inside
+
+
+def test_haversine_known_distance_and_score_curve():
+    # Paris (Notre-Dame) to London (Trafalgar Square): about 343 km.
+    assert 340 < haversine_km(48.853, 2.3499, 51.508, -0.1281) < 346
+    assert geoguessr_score(0) == 5000
+    assert geoguessr_score(1492.7) == round(5000 / math.e)
+    assert geoguessr_score(20000) < 10 and geoguessr_score(None) == 0
+    scores = [geoguessr_score(d) for d in (0, 1, 25, 200, 750, 2500)]
+    assert scores == sorted(scores, reverse=True)
+
+
+def test_out_of_range_coordinates_in_a_stored_submission_give_no_distance():
+    result = grade_geolocation(DELHI, submit(DELHI, lat=123.0))
+    assert result["distance_km"] is None and result["score"] == 0 and result["country"] is True
+
+
+# ------------------------------------------------------------------ aggregation
+def test_aggregate_and_table_by_setting():
+    perfect = grade_geolocation(DELHI, submit(DELHI))
+    wrong_city = grade_geolocation(DELHI, submit(DELHI, city="Mumbai", lat=19.07, lng=72.88))
+    rows = [{**perfect, "setting": "embodied"}, {**perfect, "setting": "embodied"},
+            {**wrong_city, "setting": "baseline"}, {**perfect, "setting": "baseline"}]
+    agg = aggregate_geolocation(rows)
+    emb, base = agg["by_setting"]["embodied"], agg["by_setting"]["baseline"]
+    assert emb["n"] == 2 and emb["city"]["value"] == 1.0 and emb["all_levels"]["successes"] == 2
+    assert base["city"]["value"] == 0.5 and base["country"]["value"] == 1.0
+    assert base["bands"]["street"]["successes"] == 1 and base["median_distance_km"] > 500
+    assert 0 <= base["city"]["ci_low"] <= 0.5 <= base["city"]["ci_high"] <= 1
+    table = render_geolocation_table({"model-a": agg, "model-b": aggregate_geolocation(rows[:2])})
+    lines = table.splitlines()
+    assert lines[0].startswith("| Setting / Run") and "Continent" in lines[0] and "All" in lines[0]
+    baseline_at = next(i for i, line in enumerate(lines) if "**Baseline**" in line)
+    embodied_at = next(i for i, line in enumerate(lines) if "**Embodied**" in line)
+    assert baseline_at < embodied_at  # the paper's order
+    assert "| 50.00 |" in lines[baseline_at + 1]  # model-a's baseline city accuracy
+    assert sum("model-b" in line for line in lines) == 1  # model-b has no baseline rows

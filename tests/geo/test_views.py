@@ -1,0 +1,137 @@
+"""Scenes, rendering and descriptions: determinism, font fallback, where cues appear, and
+that no observation names the place outside quoted sign text."""
+
+from __future__ import annotations
+
+import hashlib
+import io
+import os
+import re
+import subprocess
+import sys
+
+import pytest
+from PIL import Image
+
+from ewa_mcp.geo import fonts
+from ewa_mcp.geo.describe import describe_view
+from ewa_mcp.geo.geometry import COMPASS
+from ewa_mcp.geo.graph import build_graph
+from ewa_mcp.geo.locations import LOCATIONS, LOCATIONS_LIST
+from ewa_mcp.geo.render import render_png, render_view
+from ewa_mcp.geo.scene import compose_view
+from ewa_mcp.geo.seeding import rng_for
+
+STANDPOINTS = ("p0", "p1", "p2", "p3", "p4")
+QUOTED = re.compile(r"'[^']*'|\"[^\"]*\"")
+
+
+def all_views(loc):
+    for sp in STANDPOINTS:
+        for heading in COMPASS:
+            yield sp, heading, compose_view(loc, sp, heading)
+
+
+def test_rendering_is_deterministic_and_views_differ():
+    loc = LOCATIONS["g076"]  # Thai script, skytrain, left-hand traffic
+    spec = compose_view(loc, "p1", "east")
+    a = render_view(spec).tobytes()
+    b = render_view(compose_view.__wrapped__(loc, "p1", "east")).tobytes()  # a fresh spec, no caches
+    assert a == b
+    png = render_png(spec)
+    assert png == render_png.__wrapped__(spec)
+    image = Image.open(io.BytesIO(png))
+    assert image.size == (600, 400) and image.mode == "RGB"
+    others = {render_view(compose_view(loc, sp, h)).tobytes() for sp, h in (("p0", "east"), ("p1", "north"),
+                                                                               ("p3", "east"))}
+    assert a not in others and len(others) == 3
+
+
+def test_scenes_are_identical_in_another_process_with_another_hash_seed():
+    # Seeds come from sha256, never hash(): a view must not depend on PYTHONHASHSEED.
+    code = ("from ewa_mcp.geo.scene import compose_view; from ewa_mcp.geo.locations import LOCATIONS; "
+            "from ewa_mcp.geo.render import render_png; import hashlib; "
+            "s = compose_view(LOCATIONS['g044'], 'p2', 'west'); "
+            "print(s.seed, hashlib.sha256(render_png(s)).hexdigest())")
+    here = compose_view(LOCATIONS["g044"], "p2", "west")
+    expected = f"{here.seed} {hashlib.sha256(render_png(here)).hexdigest()}"
+    for hash_seed in ("1", "4242"):
+        env = {**os.environ, "PYTHONHASHSEED": hash_seed}
+        out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, check=True)
+        assert out.stdout.strip() == expected
+    assert rng_for("a", 1).random() == rng_for("a", 1).random() != rng_for("a", 2).random()
+
+
+def test_missing_fonts_fall_back_to_latin_deterministically(monkeypatch):
+    loc = LOCATIONS["g070"]  # Chinese signs with a pinyin line
+    spec = compose_view(loc, "p3", "north")
+    with_fonts = render_view(spec).tobytes()
+    real = fonts.font_file.__wrapped__
+
+    def latin_only(script):
+        return real(script) if script == "latin" else None
+
+    monkeypatch.setattr(fonts, "font_file", latin_only)
+    fonts.font.cache_clear()
+    try:
+        assert fonts.drawable("王府井大街", "Wangfujing Dajie") == ("Wangfujing Dajie", "latin")
+        first = render_view(spec).tobytes()
+        assert first == render_view(spec).tobytes()
+        if real("han_simplified") is not None:  # on a machine with the CJK font the fallback differs
+            assert first != with_fonts
+    finally:
+        fonts.font.cache_clear()
+
+
+def test_script_detection():
+    assert fonts.script_of("Невский проспект") == "cyrillic"
+    assert fonts.script_of("表参道") == "han_simplified" and fonts.script_of("パン屋") == "japanese"
+    assert fonts.script_of("忠孝東路") == "han_traditional" and fonts.script_of("세종대로") == "korean"
+    assert fonts.script_of("شارع") == "arabic" and fonts.script_of("Rue Neuve") == "latin"
+
+
+@pytest.mark.parametrize("loc", LOCATIONS_LIST, ids=lambda loc: loc.id)
+def test_descriptions_never_name_the_place_outside_quotes(loc):
+    names = {loc.city.name, *loc.city.aliases, loc.country.name, *loc.country.aliases}
+    words = [n for n in names if len(n) >= 4 and any(ch.isalpha() for ch in n)]
+    pattern = re.compile(r"\b(" + "|".join(re.escape(w) for w in words) + r")\b", re.IGNORECASE)
+    for sp, heading, spec in all_views(loc):
+        text = QUOTED.sub("''", describe_view(spec))
+        found = pattern.search(text)
+        assert found is None, f"{loc.id} {sp} {heading} leaks {found.group(0)!r}: {text}"
+
+
+def test_cue_placement_follows_difficulty():
+    for loc in LOCATIONS_LIST:
+        graph = build_graph(loc)
+        sign_at = {(sp, h) for sp, h, spec in all_views(loc) if spec.street_sign is not None}
+        steps = {graph[sp].steps_from_start for sp, _ in sign_at}
+        if loc.difficulty == "easy":
+            assert ("p0", "north") in sign_at, loc.id
+        elif loc.difficulty == "city":
+            assert steps == {1}, loc.id
+            for heading in COMPASS:  # no city-level cue anywhere at the start
+                spec = compose_view(loc, "p0", heading)
+                assert not spec.city_cues
+                area_coded = "{a}" in loc.country.phone
+                assert not (area_coded and any(s.phone for s in spec.shops)), loc.id
+                assert all(v.plate is None or v.plate.text is None or not v.plate.style.has_region
+                           for v in spec.vehicles), loc.id
+        else:
+            assert steps == {2}, loc.id
+            assert compose_view(loc, "p0", "north").city_cues
+
+
+def test_country_cues_are_in_the_baseline_view():
+    for loc in LOCATIONS_LIST[::7]:
+        spec = compose_view(loc, "p0", "north")
+        text = describe_view(spec)
+        assert spec.shops and all(f"'{sign.lines[0].native}" in text for sign in spec.shops)
+        if not spec.pedestrian:
+            assert f"keeps to the {loc.country.drive}" in text or "traffic moves from your" in text
+
+
+def test_landmark_views_describe_the_landmark():
+    concorde = compose_view(LOCATIONS["g001"], "p0", "north")
+    assert concorde.composition == "landmark" and "obelisk" in describe_view(concorde)
+    assert "RUE OBERKAMPF" in describe_view(compose_view(LOCATIONS["g002"], "p1", "east"))
