@@ -27,6 +27,7 @@ $(STAMP): pyproject.toml | $(BIN)/python
 
 chromium:
 	@scripts/ensure-chromium.sh
+	@scripts/ensure-fonts.sh
 
 bench: install chromium
 	for script in benchmarks/bench_*.py; do echo "== $$script"; $(BIN)/python $$script || exit 1; done
