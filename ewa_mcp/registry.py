@@ -10,11 +10,20 @@ import importlib
 from typing import Any
 
 # environment name -> "module:Class"; the class takes (episode, services).
-ENVIRONMENTS: dict[str, str] = {}
+ENVIRONMENTS: dict[str, str] = {
+    "browser": "ewa_mcp.web.env:BrowserEnvironment",
+    "kitchen": "ewa_mcp.indoor.env:KitchenEnvironment",
+    "street": "ewa_mcp.outdoor.env:StreetEnvironment",
+    "geo": "ewa_mcp.geo.env:GeoEnvironment",
+}
 
 # modules exposing register(mcp, episodes); core first so its tools list first.
 TOOL_GROUPS: list[str] = [
     "ewa_mcp.tools.core",
+    "ewa_mcp.tools.street",
+    "ewa_mcp.tools.browser",
+    "ewa_mcp.tools.kitchen",
+    "ewa_mcp.tools.geo",
 ]
 
 
