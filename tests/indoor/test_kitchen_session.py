@@ -1,0 +1,206 @@
+"""Object references, the observation, deliveries from the shop and the final state."""
+
+from __future__ import annotations
+
+import pytest
+
+from ewa_mcp.indoor.commands import CommandError, parse_command
+from ewa_mcp.indoor.observe import build_observation
+from ewa_mcp.indoor.session import KitchenActionError
+
+from .conftest import new_session
+
+
+def ids_of(session, object_type):
+    return [i for i, o in session.objects.items() if o["objectType"] == object_type]
+
+
+# ------------------------------------------------------------------ references
+def test_handles_are_per_type_and_stable():
+    s = new_session("FloorPlan2")
+    tomatoes = ids_of(s, "Tomato")
+    assert [s.handle(i) for i in tomatoes] == ["Tomato_1", "Tomato_2"]
+    assert s.resolve("Tomato_2", "interact") == (tomatoes[1], [])
+    assert s.resolve("tomato_2", "interact")[0] == tomatoes[1]
+    assert s.resolve(tomatoes[0], "interact") == (tomatoes[0], [])
+    with pytest.raises(KitchenActionError, match="there is no Tomato_3; the Tomato objects here are: Tomato_1, Tomato_2"):
+        s.resolve("Tomato_3", "interact")
+    with pytest.raises(KitchenActionError, match="no object has the id"):
+        s.resolve("Tomato|+09.00|+00.00|+00.00", "interact")
+
+
+def test_exact_types_only():
+    s = new_session("FloorPlan2")
+    with pytest.raises(KitchenActionError, match="Did you mean Egg"):
+        s.resolve("Eggplant", "interact")
+    # Knife is not ButterKnife: FloorPlan2 has only a ButterKnife
+    assert not ids_of(s, "Knife") and ids_of(s, "ButterKnife")
+    with pytest.raises(KitchenActionError, match="there is no Knife"):
+        s.resolve("Knife", "teleport")
+    # "Pot" never means Potato
+    assert s.objects[s.resolve("Pot", "teleport")[0]]["objectType"] == "Pot"
+
+
+def test_bare_type_rule():
+    s = new_session("FloorPlan2")  # Tomato_1 is in the closed fridge, Tomato_2 on CounterTop_1
+    a, b = ids_of(s, "Tomato")
+    # teleport picks the nearest and says which, listing the other
+    nearest = min((a, b), key=lambda t: s.objects[t]["distance"])
+    other = b if nearest == a else a
+    chosen, notes = s.resolve("Tomato", "teleport")
+    assert chosen == nearest and "nearest" in notes[0] and s.handle(other) in notes[0]
+    # interacting needs one in reach; otherwise the error lists where each one is
+    s.teleport("Fridge")
+    with pytest.raises(KitchenActionError, match=r"no Tomato is within reach; they are: .*Tomato_1 in/on Fridge_1 \(closed\)"):
+        s.resolve("Tomato", "interact")
+    s.open("Fridge")
+    assert s.resolve("Tomato", "interact") == (a, [])  # the only one in reach: no note needed
+    s.teleport("Tomato_2")
+    assert s.resolve("Tomato", "interact")[0] == b
+    # several in reach: the nearest, and the reply names the others
+    s.teleport("ButterKnife")
+    container = s.parent_of(s.objects[ids_of(s, "ButterKnife")[0]])
+    if s.objects[container]["openable"]:
+        s.open(container)
+    s.pickup("ButterKnife")
+    s.teleport("Tomato_2")
+    s.slice("Tomato_2")
+    piece, notes = s.resolve("TomatoSliced", "interact")
+    visible = sorted((o["distance"], i) for i, o in s.objects.items() if o["objectType"] == "TomatoSliced" and o["visible"])
+    assert len(visible) > 1 and piece == visible[0][1] and "in reach (others:" in notes[0]
+    # a type with a single instance always resolves to it, whatever the case
+    fridge = ids_of(s, "Fridge")[0]
+    assert s.resolve("fridge", "interact") == (fridge, [])
+
+
+def test_sliced_food_and_pieces_are_addressable():
+    s = new_session("FloorPlan12")
+    s.teleport("Knife")
+    s.pickup("Knife")
+    s.teleport("Lettuce")
+    lettuce = s.resolve("Lettuce", "interact")[0]
+    container = s.parent_of(s.objects[lettuce])
+    if s.objects[container]["openable"]:
+        s.open(container)
+    s.slice("Lettuce")
+    with pytest.raises(KitchenActionError, match="no longer exists"):
+        s.resolve("Lettuce_1", "interact")
+    piece, notes = s.resolve("Lettuce", "interact")
+    assert s.objects[piece]["objectType"] == "LettuceSliced" and "cut into LettuceSliced" in notes[0]
+    assert s.resolve("LettuceSliced_3", "interact")[0] in s.objects
+    s.teleport("CounterTop")
+    s.put("CounterTop")
+    s.teleport("LettuceSliced_2")
+    s.pickup("LettuceSliced_2")
+    assert s.handle(s.held_id) == "LettuceSliced_2"
+
+
+def test_action_strings():
+    assert parse_command("Teleport [Pan]").target == "Pan"
+    assert parse_command("pickupobject Apple_1").action == "PickupObject"
+    assert parse_command("toggle_on StoveKnob_2").action == "ToggleObjectOn"
+    with pytest.raises(CommandError, match="needs an object"):
+        parse_command("PickupObject")
+    with pytest.raises(CommandError, match="takes no object"):
+        parse_command("MoveAhead Fridge")
+    with pytest.raises(CommandError, match="unknown action 'Fly'"):
+        parse_command("Fly Apple")
+    s = new_session("FloorPlan12")
+    report = s.run("Teleport [Fridge]")
+    assert report.action == "Teleport" and s.objects[report.target]["objectType"] == "Fridge"
+    with pytest.raises(KitchenActionError, match="unknown action"):
+        s.run("Jump")
+
+
+# ------------------------------------------------------------------ observation
+def test_observation_shows_pose_holding_reach_and_states():
+    s = new_session("FloorPlan12")
+    s.teleport("Fridge")
+    s.open("Fridge")
+    text, data = build_observation(s, "text")
+    lines = text.splitlines()
+    assert lines[0].startswith("Kitchen FloorPlan12 (sim). You stand at") and "holding nothing" in lines[0]
+    assert lines[1] == "Done: OpenObject Fridge_1."
+    assert "Fridge_1" in next(line for line in lines if line.startswith("In reach:"))
+    assert any(line.startswith("- Fridge_1 (open)") for line in lines)
+    assert any("StoveBurner_1 (off, knob StoveKnob_" in line for line in lines)
+    assert "(closed)" in text  # cabinets and drawers show their state
+    assert data["in_reach"] and data["holding"] is None
+    fridge = next(o for o in data["objects"] if o["handle"] == "Fridge_1")
+    assert fridge["states"] == ["open"] and fridge["visible"] is True
+    vision_text, vision_data = build_observation(s, "vision")
+    assert "In reach" not in vision_text and "objects" not in vision_data
+
+
+def test_held_object_and_its_contents_are_shown():
+    s = new_session("FloorPlan12")
+    s.teleport("Plate")
+    container = s.parent_of(s.objects[s.resolve("Plate", "teleport")[0]])
+    if s.objects[container]["openable"]:
+        s.open(container)
+    s.pickup("Plate")
+    text, _ = build_observation(s, "text")
+    assert "holding Plate_1 {}" in text.splitlines()[0]
+
+
+# ------------------------------------------------------------------ deliveries
+def order(items, order_id="o1"):
+    return {"site": "shop", "type": "order_placed", "order": {"order_id": order_id, "store_id": "s1", "items": items}}
+
+
+def test_groceries_arrive_on_a_counter_once():
+    s = new_session("FloorPlan3")  # no Potato, no Bread here
+    assert not ids_of(s, "Potato")
+    events = [{"site": "shop", "type": "page_view"},
+              order([{"product_id": "p1", "kitchen_type": "Potato", "size": "large", "quantity": 2},
+                     {"product_id": "p2", "quantity": 1},
+                     {"product_id": "p3", "kitchen_type": "Cheese", "quantity": 1}])]
+    notes = s.receive_deliveries(events)
+    potatoes = ids_of(s, "Potato")
+    assert len(potatoes) == 2
+    assert all(s.objects[s.parent_of(s.objects[p])]["objectType"] == "CounterTop" for p in potatoes)
+    assert notes[0].startswith("A delivery arrived: Potato_1 on CounterTop_")
+    assert any("Cheese" in n for n in notes)
+    # the same events again deliver nothing new; a new order does
+    assert s.receive_deliveries(events) == []
+    events.append(order([{"product_id": "p4", "kitchen_type": "bread", "quantity": 1}], "o2"))
+    assert s.receive_deliveries(events)[0].startswith("A delivery arrived: Bread_1")
+    state = s.final_state()
+    kinds = [(d["kitchen_type"], d["status"], len(d["objectIds"])) for d in state["deliveries"]]
+    assert kinds == [("Potato", "delivered", 2), ("Cheese", "not_a_kitchen_object", 0), ("Bread", "delivered", 1)]
+    # the observation says so once
+    text, _ = build_observation(s, "text")
+    assert "A delivery arrived: Potato_1" in text
+    assert "A delivery arrived" not in build_observation(s, "text")[0]
+
+
+def test_deliveries_are_deterministic():
+    events = [order([{"product_id": "p1", "kitchen_type": "Potato", "quantity": 1}])]
+    a, b = new_session("FloorPlan3"), new_session("FloorPlan3")
+    a.receive_deliveries(events)
+    b.receive_deliveries(events)
+    assert a.final_state()["deliveries"] == b.final_state()["deliveries"]
+
+
+# ------------------------------------------------------------------ final state
+def test_final_state_contract():
+    s = new_session("FloorPlan12")
+    s.teleport("Knife")
+    s.pickup("Knife")
+    s.teleport("Tomato")
+    tomato = s.resolve("Tomato", "interact")[0]
+    container = s.parent_of(s.objects[tomato])
+    if s.objects[container]["openable"]:
+        s.open(container)
+    s.slice("Tomato")
+    state = s.final_state()
+    assert state["backend"] == "sim" and state["scene"] == "FloorPlan12" and state["held"] == s.held_id
+    assert set(state) >= {"objects", "agent", "held", "deliveries"}
+    required = {"objectType", "objectId", "parentReceptacles", "isSliced", "isCooked", "isBroken", "isToggled",
+                "isOpen", "isPickedUp", "handle"}
+    for obj in state["objects"]:
+        assert required <= set(obj)
+    pieces = [o for o in state["objects"] if o["objectType"] == "TomatoSliced"]
+    assert pieces and all(p["sourceType"] == "Tomato" and p["parentReceptacles"][0] == container for p in pieces)
+    knife = next(o for o in state["objects"] if o["objectId"] == s.held_id)
+    assert knife["isPickedUp"] and knife["parentReceptacles"] is None
