@@ -1,0 +1,66 @@
+"""The whole task suite played by the oracle through the real MCP server, then graded.
+
+    .venv/bin/python benchmarks/bench_oracle_suite.py [--workers 2] [--transport inprocess] [--sample N]
+
+Prints JSON: wall time, episodes per minute, and per-domain overall accuracy (acceptance: 100 %).
+Target on the 2-core machine with --workers 2: the whole suite in <= 20 minutes.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import tempfile
+import time
+from pathlib import Path
+
+import anyio
+
+from ewa_mcp.evaluation.agents import OracleAgent
+from ewa_mcp.evaluation.runner import run_eval, select_tasks
+from ewa_mcp.graders import grade_run
+from ewa_mcp.paths import tasks_dir
+from ewa_mcp.taskmodel import TaskStore
+
+
+def main() -> None:
+    p = argparse.ArgumentParser()
+    p.add_argument("--workers", type=int, default=2)
+    p.add_argument("--transport", default="inprocess")
+    p.add_argument("--sample", type=int, default=None)
+    p.add_argument("--run-dir", default=None)
+    args = p.parse_args()
+    store = TaskStore([tasks_dir()])
+    tasks = [t for t in select_tasks(store, None, args.sample) if t.domain != "demo"]
+    run_dir = Path(args.run_dir or tempfile.mkdtemp(prefix="ewa-oracle-suite-"))
+    t0 = time.monotonic()
+    summary = anyio.run(lambda: run_eval(tasks, OracleAgent(), transport=args.transport, workers=args.workers,
+                                         run_dir=run_dir, task_dirs=[tasks_dir()], progress=True))
+    played = time.monotonic() - t0
+    t1 = time.monotonic()
+    report = grade_run(run_dir)
+    graded = time.monotonic() - t1
+    by_domain: dict[str, dict[str, int]] = {}
+    for e in report.episodes:
+        d = by_domain.setdefault(e.domain, {"episodes": 0, "overall_success": 0})
+        d["episodes"] += 1
+        d["overall_success"] += bool(e.overall_success)
+    failures = [{"task": e.task_id, "problems": e.problems[:2],
+                 "unmet": [c.description for c in e.conditions if c.met is False][:3]}
+                for e in report.episodes if not e.overall_success]
+    print(json.dumps({
+        "benchmark": "oracle over the task suite",
+        "tasks": len(tasks), "workers": args.workers, "transport": args.transport,
+        "play_seconds": round(played, 1), "grade_seconds": round(graded, 1),
+        "episodes_per_minute": round(len(tasks) / played * 60, 1),
+        "could_not_play": [o.task_id for o in summary.outcomes if o.failure][:20],
+        "by_domain": {d: {**v, "accuracy": round(v["overall_success"] / v["episodes"], 4)}
+                      for d, v in sorted(by_domain.items())},
+        "failures": failures[:20],
+        "target": {"minutes": 20, "met": played <= 1200},
+        "run_dir": str(run_dir),
+    }, indent=2))
+
+
+if __name__ == "__main__":
+    main()
