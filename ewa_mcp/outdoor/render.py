@@ -1,0 +1,293 @@
+"""Deterministic street-view images drawn with Pillow from a Scene.
+
+A pinhole camera 1.7 m above the sidewalk looks along the view heading (90° field of view).
+Buildings stand on facade planes either side of the street, broken where cross streets open;
+landmarks are drawn by architectural style (columns, spires, stepped crowns, glass grids, ...),
+never with their names; shops carry sign boards with their names; tall landmarks rise on the
+skyline; intersections show street-name signs. Same scene -> same pixels.
+
+The drawing helpers (``Camera``, ``draw_facade``) take plain numbers so other renderers (the
+geolocation world) can reuse them.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+import random
+from dataclasses import dataclass
+from functools import lru_cache
+
+from PIL import Image, ImageDraw, ImageFont
+
+from .scene import Frontage, Scene
+
+WIDTH, HEIGHT = 320, 220
+CAMERA_HEIGHT_M = 1.7
+FACADE_X_M = 11.0  # half the distance between facades across a typical street
+ROAD_HALF_M = 6.5
+SKY = (176, 204, 230)
+SKY_TOP = (122, 162, 210)
+AHEAD_END_WALL = 200.0  # a street that ends sooner than this shows the building fronts where it ends
+ROAD = (86, 88, 92)
+SIDEWALK = (170, 166, 158)
+LANE = (235, 225, 160)
+WALL_TONES = [(150, 98, 80), (178, 140, 110), (120, 110, 104), (196, 180, 150), (140, 120, 100), (110, 84, 72),
+              (168, 160, 150), (130, 136, 142)]
+
+STYLE_PALETTES = {
+    "art deco": ((214, 200, 170), (150, 130, 100)),
+    "gothic": ((170, 168, 160), (95, 92, 88)),
+    "beaux-arts": ((232, 222, 200), (170, 160, 140)),
+    "renaissance": ((226, 214, 190), (160, 150, 130)),
+    "neoclassical": ((236, 230, 214), (170, 165, 150)),
+    "greek revival": ((238, 234, 222), (170, 165, 150)),
+    "international": ((120, 150, 170), (60, 80, 96)),
+    "modern": ((130, 160, 185), (70, 90, 110)),
+    "high-tech": ((150, 170, 185), (60, 70, 80)),
+    "brutalist": ((150, 148, 140), (100, 98, 92)),
+    "georgian": ((160, 72, 56), (240, 236, 226)),
+    "federal": ((164, 78, 60), (240, 236, 226)),
+    "romanesque": ((140, 96, 72), (90, 60, 45)),
+    "second empire": ((214, 206, 190), (90, 100, 96)),
+    "postmodern": ((206, 150, 140), (120, 90, 86)),
+    "queen anne": ((150, 70, 52), (40, 40, 40)),
+    "byzantine": ((196, 130, 100), (150, 110, 80)),
+    "tudor": ((170, 110, 80), (70, 50, 40)),
+    "palladian": ((210, 190, 160), (150, 130, 110)),
+    "flemish": ((236, 232, 224), (150, 150, 150)),
+    "neo-futurism": ((150, 175, 195), (200, 190, 170)),
+}
+
+
+def _style_key(style: str) -> str:
+    s = style.lower()
+    for key in STYLE_PALETTES:
+        if key in s:
+            return key
+    if "modernism" in s:
+        return "modern"
+    return ""
+
+
+@lru_cache(maxsize=64)
+def font(size: int) -> ImageFont.FreeTypeFont | ImageFont.ImageFont:
+    # Pillow's bundled font: no system font needed, identical output on every machine.
+    return ImageFont.load_default(size=max(6, size))
+
+
+@dataclass
+class Camera:
+    width: int = WIDTH
+    height: int = HEIGHT
+    horizon: float = HEIGHT * 0.46
+
+    @property
+    def focal(self) -> float:
+        return self.width / 2.0  # 90 degree horizontal field of view
+
+    def project(self, x: float, y: float, z: float) -> tuple[float, float]:
+        """World metres (x right, y up from the ground, z ahead) to pixels."""
+        z = max(z, 0.5)
+        return (self.width / 2.0 + x * self.focal / z,
+                self.horizon + (CAMERA_HEIGHT_M - y) * self.focal / z)
+
+
+def draw_facade(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], style: str, rng: random.Random,
+                base: tuple[int, int, int] | None = None, floors: int = 6) -> None:
+    """Fill a facade quadrilateral (bottom-near, top-near, top-far, bottom-far) with a style pattern."""
+    key = _style_key(style)
+    main, trim = STYLE_PALETTES.get(key, (base or rng.choice(WALL_TONES), (60, 60, 64)))
+    draw.polygon(quad, fill=main, outline=trim)
+    (bx0, by0), (tx0, ty0), (tx1, ty1), (bx1, by1) = quad
+
+    def lerp(a: tuple[float, float], b: tuple[float, float], t: float) -> tuple[float, float]:
+        return a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t
+
+    near_h = by0 - ty0
+    if near_h < 4:
+        return
+    columns = max(2, min(14, int(abs(bx1 - bx0) / 5) + 2))
+    if key in ("international", "modern", "high-tech", "neo-futurism"):
+        for c in range(1, columns):  # glass curtain wall: mullion grid
+            t = c / columns
+            draw.line([lerp((bx0, by0), (bx1, by1), t), lerp((tx0, ty0), (tx1, ty1), t)], fill=trim, width=1)
+        for f in range(1, floors * 2):
+            t = f / (floors * 2)
+            draw.line([lerp((bx0, by0), (tx0, ty0), t), lerp((bx1, by1), (tx1, ty1), t)], fill=trim, width=1)
+        if key == "high-tech":
+            draw.line([(bx0, by0), (tx1, ty1)], fill=trim, width=2)
+            draw.line([(tx0, ty0), (bx1, by1)], fill=trim, width=2)
+        return
+    window = (60, 70, 84) if key not in ("georgian", "federal") else (40, 46, 56)
+    for f in range(1, floors):
+        for c in range(1, columns):
+            t, u = c / columns, f / floors
+            bottom = lerp((bx0, by0), (bx1, by1), t)
+            top = lerp((tx0, ty0), (tx1, ty1), t)
+            x, y = lerp(bottom, top, u)
+            w = max(1.0, abs(bx1 - bx0) / columns * 0.35)
+            h = max(1.0, (bottom[1] - top[1]) / floors * 0.45)
+            if key in ("gothic", "romanesque", "byzantine", "tudor"):
+                draw.ellipse([x - w, y - h * 1.3, x + w, y - h * 0.3], fill=window)  # arched heads
+            draw.rectangle([x - w, y - h, x + w, y], fill=window)
+    if key in ("beaux-arts", "renaissance", "neoclassical", "greek revival", "palladian"):
+        for c in range(columns + 1):  # a colonnade on the ground floor
+            t = c / columns
+            bottom = lerp((bx0, by0), (bx1, by1), t)
+            top = lerp(bottom, lerp((tx0, ty0), (tx1, ty1), t), 0.3)
+            draw.line([bottom, top], fill=trim, width=2)
+    if key in ("gothic", "flemish"):  # spires along the roof
+        for c in range(0, columns + 1, 2):
+            x, y = lerp((tx0, ty0), (tx1, ty1), c / columns)
+            draw.polygon([(x - 3, y), (x + 3, y), (x, y - max(6.0, near_h * 0.25))], fill=trim)
+    if key == "art deco":  # stepped crown
+        x0, y0 = lerp((tx0, ty0), (tx1, ty1), 0.2)
+        x1, y1 = lerp((tx0, ty0), (tx1, ty1), 0.8)
+        step = max(3.0, near_h * 0.08)
+        draw.polygon([(x0, y0), (x0, y0 - step), (x1, y1 - step), (x1, y1)], fill=main, outline=trim)
+    if key == "second empire":  # mansard roof
+        draw.polygon([(tx0, ty0), (tx1, ty1), (tx1, ty1 - near_h * 0.12), (tx0, ty0 - near_h * 0.12)], fill=trim)
+    if key == "postmodern":  # broken pediment
+        mx, my = lerp((tx0, ty0), (tx1, ty1), 0.5)
+        draw.polygon([(tx0, ty0), (mx - 2, my - near_h * 0.15), (mx - 2, my)], fill=trim)
+        draw.polygon([(tx1, ty1), (mx + 2, my - near_h * 0.15), (mx + 2, my)], fill=trim)
+
+
+def _sky_and_ground(img: Image.Image, draw: ImageDraw.ImageDraw, cam: Camera) -> None:
+    h = int(cam.horizon)
+    for y in range(0, h + 1, 4):
+        t = y / max(1, h)
+        c = tuple(int(SKY_TOP[k] + (SKY[k] - SKY_TOP[k]) * t) for k in range(3))
+        draw.rectangle([0, y, cam.width, y + 4], fill=c)
+    draw.rectangle([0, h, cam.width, cam.height], fill=SIDEWALK)
+
+
+def _skyline(draw: ImageDraw.ImageDraw, scene: Scene, cam: Camera) -> None:
+    for item in scene.skyline:
+        x = cam.width / 2 + math.tan(math.radians(item.rel_angle)) * cam.focal
+        top = cam.horizon - min(cam.horizon - 4, item.height_m * cam.focal / item.distance_m)
+        half = max(3.0, 40.0 * cam.focal / item.distance_m)
+        key = _style_key(item.style)
+        colour = STYLE_PALETTES.get(key, ((150, 160, 172), (0, 0, 0)))[0]
+        colour = tuple(int(c * 0.55 + 140 * 0.45) for c in colour)  # atmospheric haze
+        if key == "art deco":
+            draw.rectangle([x - half, top + (cam.horizon - top) * 0.25, x + half, cam.horizon], fill=colour)
+            draw.rectangle([x - half * 0.6, top + (cam.horizon - top) * 0.1, x + half * 0.6, cam.horizon], fill=colour)
+            draw.polygon([(x - half * 0.25, top + 8), (x + half * 0.25, top + 8), (x, top)], fill=colour)
+        elif key in ("gothic", "postmodern", "flemish"):
+            draw.rectangle([x - half, top + 6, x + half, cam.horizon], fill=colour)
+            draw.polygon([(x - half, top + 6), (x + half, top + 6), (x, top - 4)], fill=colour)
+        else:
+            draw.rectangle([x - half, top, x + half, cam.horizon], fill=colour)
+
+
+def _side_segments(scene: Scene, side: str, end: float) -> list[tuple[float, float]]:
+    """Depth ranges with buildings on one side, cut where cross streets open."""
+    cuts = sorted(o.distance_m for o in scene.openings if o.side in (side, "both"))
+    segs, start = [], 2.0
+    for d in cuts:
+        if d - 9 > start:
+            segs.append((start, d - 9))
+        start = d + 9
+    if end > start:
+        segs.append((start, end))
+    return segs
+
+
+def _draw_sign(draw: ImageDraw.ImageDraw, cam: Camera, side: str, z: float, text: str, colour: tuple[int, int, int]) -> None:
+    x = FACADE_X_M - 0.1 if side == "right" else -FACADE_X_M + 0.1
+    z0, z1 = max(2.5, z - 6), z + 6
+    p = [cam.project(x, 3.0, z0), cam.project(x, 4.6, z0), cam.project(x, 4.6, z1), cam.project(x, 3.0, z1)]
+    draw.polygon(p, fill=colour, outline=(20, 20, 20))
+    size = int(1.3 * cam.focal / max(z, 3.0))
+    if size >= 7:
+        cx = (p[0][0] + p[3][0]) / 2
+        cy = (p[0][1] + p[1][1] + p[2][1] + p[3][1]) / 4
+        fnt = font(min(18, size))
+        w = draw.textlength(text, font=fnt)
+        draw.text((cx - w / 2, cy - size / 2), text, font=fnt, fill=(250, 250, 250))
+
+
+def _sign_colour(name: str) -> tuple[int, int, int]:
+    palette = [(176, 30, 36), (20, 110, 60), (30, 70, 150), (120, 40, 120), (200, 120, 20), (30, 30, 30)]
+    return palette[sum(map(ord, name)) % len(palette)]
+
+
+def render(scene: Scene, cam: Camera | None = None) -> Image.Image:
+    cam = cam or Camera()
+    rng = random.Random(scene.seed)
+    img = Image.new("RGB", (cam.width, cam.height), SKY)
+    draw = ImageDraw.Draw(img)
+    _sky_and_ground(img, draw, cam)
+    _skyline(draw, scene, cam)
+    end = scene.ahead_length_m if scene.road_ahead else 16.0
+    end = max(end, 16.0)
+    far = min(end, 240.0)
+    if scene.road_ahead:
+        road = [cam.project(-ROAD_HALF_M, 0, 2.0), cam.project(-ROAD_HALF_M, 0, far), cam.project(ROAD_HALF_M, 0, far),
+                cam.project(ROAD_HALF_M, 0, 2.0)]
+        draw.polygon(road, fill=ROAD)
+        for z in range(4, int(far), 12):  # centre line dashes
+            draw.line([cam.project(0, 0, z), cam.project(0, 0, z + 5)], fill=LANE, width=2)
+        for o in scene.openings:  # cross streets: tarmac reaching out sideways
+            for side in (("left", "right") if o.side == "both" else (o.side,)):
+                sgn = 1 if side == "right" else -1
+                draw.polygon([cam.project(sgn * ROAD_HALF_M, 0, o.distance_m - 6), cam.project(sgn * 60, 0, o.distance_m - 6),
+                              cam.project(sgn * 60, 0, o.distance_m + 6), cam.project(sgn * ROAD_HALF_M, 0, o.distance_m + 6)],
+                             fill=ROAD)
+        if far < AHEAD_END_WALL:
+            _end_wall(draw, cam, far + 12, rng)
+    else:
+        _end_wall(draw, cam, 14.0, rng)
+    # Facades, far to near, both sides.
+    landmarks: dict[str, list[Frontage]] = {"left": [], "right": []}
+    for f in scene.frontages:
+        if f.side in landmarks:
+            landmarks[f.side].append(f)
+    pieces: list[tuple[float, str, float, float, Frontage | None]] = []
+    for side in ("left", "right"):
+        for z0, z1 in _side_segments(scene, side, far):
+            z = z0
+            while z < z1:
+                w = min(z1 - z, rng.uniform(12, 26))
+                lm = next((f for f in landmarks[side] if f.style and z - 10 <= f.distance_m <= z + w + 10), None)
+                pieces.append((z, side, z, z + w, lm))
+                z += w
+    for _, side, z0, z1, lm in sorted(pieces, key=lambda p: -p[0]):
+        x = FACADE_X_M if side == "right" else -FACADE_X_M
+        height = rng.uniform(12, 40) if lm is None else min(80.0, max(18.0, (lm.height_m or 30.0)))
+        quad = [cam.project(x, 0, z0), cam.project(x, height, z0), cam.project(x, height, z1), cam.project(x, 0, z1)]
+        draw_facade(draw, quad, lm.style if lm else "", rng, floors=max(3, int(height / 4)))
+    for f in sorted(scene.frontages, key=lambda f: -f.distance_m):
+        if f.sign and f.side in ("left", "right"):
+            _draw_sign(draw, cam, f.side, f.distance_m, f.sign, _sign_colour(f.sign))
+        elif f.sign and f.side == "ahead":
+            _draw_sign(draw, cam, "right", f.distance_m, f.sign, _sign_colour(f.sign))
+    if scene.street_signs:
+        _street_sign(draw, cam, scene.street_signs)
+    return img
+
+
+def _end_wall(draw: ImageDraw.ImageDraw, cam: Camera, z: float, rng: random.Random) -> None:
+    quad = [cam.project(-60, 0, z), cam.project(-60, 28, z), cam.project(60, 28, z), cam.project(60, 0, z)]
+    draw_facade(draw, [quad[0], quad[1], quad[2], quad[3]], "", rng, floors=7)
+
+
+def _street_sign(draw: ImageDraw.ImageDraw, cam: Camera, names: list[str]) -> None:
+    fnt = font(10)
+    x, y = cam.width - 8, 10
+    draw.line([(x - 4, y), (x - 4, cam.height * 0.9)], fill=(50, 60, 50), width=3)  # the pole
+    for name in names[:3]:
+        w = draw.textlength(name, font=fnt)
+        draw.rectangle([x - w - 12, y, x - 2, y + 14], fill=(18, 110, 58), outline=(240, 240, 240))
+        draw.text((x - w - 7, y + 1), name, font=fnt, fill=(250, 250, 250))
+        y += 17
+
+
+def render_png(scene: Scene, cam: Camera | None = None) -> bytes:
+    buf = io.BytesIO()
+    # A small adaptive palette keeps each view around 10-20 KB without visible banding.
+    render(scene, cam).quantize(colors=128, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE).save(
+        buf, format="PNG", optimize=False)
+    return buf.getvalue()

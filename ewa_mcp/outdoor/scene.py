@@ -1,0 +1,157 @@
+"""What a standing agent can see in one direction: the street ahead and its cross streets, the
+buildings and shop signs on either side, tall landmarks on the skyline, street-name signs.
+
+The same Scene feeds the image renderer (render.py) and the text description (describe), so
+text-only and vision agents observe the same world.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import math
+from dataclasses import dataclass, field
+
+from .geo import angle_diff, bearing_deg, cardinal_word, haversine_m
+from .world import CityGraph, Place, World
+
+VIEW_HALF_ANGLE = 50.0  # degrees either side of the view heading that count as "in view"
+NEAR_RANGE_M = 160.0  # buildings along the street that are described
+SKYLINE_RANGE_M = 1500.0
+SKYLINE_MIN_HEIGHT_M = 120.0
+AHEAD_LOOK_M = 250.0
+SIGN_KINDS = {"store", "restaurant", "shop", "station", "market"}  # kinds whose name is on a sign
+FACADE_KINDS = {"landmark", "church", "museum", "library", "hotel", "theater", "market", "station"}
+
+
+@dataclass
+class Frontage:
+    side: str  # left, right or ahead
+    distance_m: float  # distance along the view direction
+    lateral_m: float  # distance to the side of the view axis
+    kind: str
+    sign: str | None  # the shop sign's text; None for landmarks (their names are not painted)
+    style: str  # architectural style or "" (drives the facade drawing)
+    height_m: float | None
+    hint: str  # a visual description without the name
+    place_id: str
+
+
+@dataclass
+class Opening:
+    side: str  # left, right or both
+    distance_m: float
+    street: str
+
+
+@dataclass
+class SkylineItem:
+    rel_angle: float  # degrees right of the view centre
+    distance_m: float
+    height_m: float
+    style: str
+    hint: str
+    place_id: str
+
+
+@dataclass
+class Scene:
+    city: str
+    node: str
+    heading: float
+    label: str  # front / right / back / left or N / E / S / W
+    road_ahead: bool
+    ahead_street: str | None
+    ahead_length_m: float
+    openings: list[Opening] = field(default_factory=list)
+    frontages: list[Frontage] = field(default_factory=list)
+    skyline: list[SkylineItem] = field(default_factory=list)
+    street_signs: list[str] = field(default_factory=list)
+    seed: int = 0
+
+
+def _style(p: Place) -> str:
+    return str(p.facts.get("architectural_style", "")) if p.kind in FACADE_KINDS else ""
+
+
+def compute_scene(world: World, graph: CityGraph, i: int, heading: float, label: str) -> Scene:
+    node_id = graph.ids[i]
+    seed = int(hashlib.sha1(f"{node_id}:{round(heading) % 360}".encode()).hexdigest()[:8], 16)
+    scene = Scene(graph.city, node_id, heading % 360.0, label, False, None, 0.0, seed=seed)
+    # The street ahead: follow the straightest continuation while it stays within 20 degrees.
+    ahead = [(j, length, s, h) for j, length, s, h in graph.adj[i] if abs(angle_diff(h, heading)) <= 30.0]
+    if ahead:
+        j, length, s, h = min(ahead, key=lambda link: abs(angle_diff(link[3], heading)))
+        scene.road_ahead = True
+        scene.ahead_street = graph.streets[s]
+        travelled, prev, cur, cur_h = length, i, j, h
+        while travelled < AHEAD_LOOK_M:
+            for k, _, s2, h2 in graph.adj[cur]:
+                rel = angle_diff(h2, cur_h)
+                if k != prev and 45.0 <= abs(rel) <= 135.0 and graph.streets[s2] != scene.ahead_street:
+                    side = "right" if rel > 0 else "left"
+                    existing = next((o for o in scene.openings if abs(o.distance_m - travelled) < 5), None)
+                    if existing and existing.side != side:
+                        existing.side = "both"
+                    elif existing is None:
+                        scene.openings.append(Opening(side, round(travelled, 1), graph.streets[s2]))
+            straight = [(k, ln, s2, h2) for k, ln, s2, h2 in graph.adj[cur]
+                        if k != prev and abs(angle_diff(h2, cur_h)) <= 20.0]
+            if not straight:
+                break
+            k, ln, _, h2 = min(straight, key=lambda link: abs(angle_diff(link[3], cur_h)))
+            prev, cur, cur_h = cur, k, h2
+            travelled += ln
+        scene.ahead_length_m = round(min(travelled, AHEAD_LOOK_M), 1)
+    lat0, lng0 = graph.lat[i], graph.lng[i]
+    for p in world.places.values():
+        if p.city != graph.city or abs(p.lat - lat0) > 0.015 or abs(p.lng - lng0) > 0.02:
+            continue
+        d = haversine_m(lat0, lng0, p.lat, p.lng)
+        if d < 1.0:
+            continue
+        rel = angle_diff(bearing_deg(lat0, lng0, p.lat, p.lng), heading)
+        if abs(rel) > VIEW_HALF_ANGLE:
+            continue
+        along = d * math.cos(math.radians(rel))
+        lateral = d * math.sin(math.radians(rel))
+        height = p.facts.get("height_m")
+        if d <= NEAR_RANGE_M:
+            side = "ahead" if abs(rel) < 8.0 else ("right" if rel > 0 else "left")
+            scene.frontages.append(Frontage(side, round(max(along, 3.0), 1), round(abs(lateral), 1), p.kind,
+                                            p.name if p.kind in SIGN_KINDS else None, _style(p),
+                                            float(height) if height else None, p.description_hint, p.id))
+        elif height and float(height) >= SKYLINE_MIN_HEIGHT_M and d <= SKYLINE_RANGE_M and abs(rel) <= 40.0:
+            scene.skyline.append(SkylineItem(round(rel, 1), round(d, 1), float(height), _style(p),
+                                             p.description_hint, p.id))
+    scene.frontages.sort(key=lambda f: f.distance_m)
+    scene.skyline.sort(key=lambda s: -s.distance_m)
+    streets = graph.node_streets[i]
+    if len(streets) >= 2:
+        scene.street_signs = list(streets)
+    return scene
+
+
+def describe(scene: Scene) -> str:
+    """One paragraph for text-only agents; never names landmarks, only what a sign would show."""
+    parts = [f"{scene.label} (facing {cardinal_word(scene.heading)}, {round(scene.heading)}°):"]
+    if scene.road_ahead:
+        parts.append(f"{scene.ahead_street} continues ahead for about {int(round(scene.ahead_length_m, -1))} m.")
+        if scene.openings:
+            crossings = "; ".join(
+                f"{o.street} opens to the {o.side if o.side != 'both' else 'left and right'} at {int(round(o.distance_m))} m"
+                for o in scene.openings[:3])
+            parts.append(f"Cross streets: {crossings}.")
+    else:
+        parts.append("No street continues this way: a row of building fronts across the sidewalk.")
+    for f in scene.frontages[:5]:
+        where = "straight ahead" if f.side == "ahead" else f"on the {f.side}"
+        what = f'a sign reading "{f.sign}" ({f.kind})' if f.sign else f.hint.rstrip(".").lower()
+        if f.sign and f.hint:
+            what += f" — {f.hint.rstrip('.').lower()}"
+        parts.append(f"{where.capitalize()}, {int(round(f.distance_m))} m: {what}.")
+    for s in sorted(scene.skyline, key=lambda s: s.distance_m)[:2]:
+        side = "slightly right" if s.rel_angle > 10 else "slightly left" if s.rel_angle < -10 else "straight ahead"
+        parts.append(f"On the skyline {side}, about {int(round(s.distance_m, -2))} m away: {s.hint.rstrip('.').lower()}.")
+    if scene.street_signs:
+        parts.append("Street signs here: " + " / ".join(scene.street_signs) + ".")
+    return " ".join(parts)

@@ -1,0 +1,13 @@
+import pytest
+
+
+@pytest.fixture
+def anyio_backend():
+    return "asyncio"
+
+
+@pytest.fixture(scope="session")
+def world():
+    from ewa_mcp.outdoor.world import get_world
+
+    return get_world()

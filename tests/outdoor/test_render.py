@@ -1,0 +1,52 @@
+"""Views: deterministic images and text descriptions derived from the same scene."""
+
+import io
+
+from PIL import Image
+
+from ewa_mcp.outdoor.render import render_png
+from ewa_mcp.outdoor.scene import compute_scene, describe
+
+
+def _scene(world, place_id, heading):
+    p = world.place(place_id)
+    graph, i = world.locate(p.node)
+    return compute_scene(world, graph, i, heading, "front")
+
+
+def test_same_scene_renders_identical_pixels(world):
+    a = render_png(_scene(world, "store-target-herald-square", 299.0))
+    b = render_png(_scene(world, "store-target-herald-square", 299.0))
+    assert a == b
+    img = Image.open(io.BytesIO(a))
+    assert img.size == (320, 220)
+    assert len(img.convert("RGB").getcolors(maxcolors=4096) or []) > 10  # an actual picture, not a blank frame
+
+
+def test_different_directions_give_different_views(world):
+    views = {render_png(_scene(world, "poi-manhattan-flatiron-building", h)) for h in (29.0, 119.0, 209.0, 299.0)}
+    assert len(views) == 4
+
+
+def test_description_names_shop_signs_but_not_landmarks(world):
+    # Facing along West 34th Street from Target's node: Target's own sign is in view.
+    store = world.place("store-target-herald-square")
+    graph, i = world.locate(store.node)
+    texts = [describe(compute_scene(world, graph, i, h, "v")) for h in range(0, 360, 45)]
+    assert any('"Target Herald Square"' in t for t in texts)
+    fl = world.place("poi-manhattan-flatiron-building")
+    graph, i = world.locate(fl.node)
+    texts = [describe(compute_scene(world, graph, i, h, "v")) for h in range(0, 360, 30)]
+    assert any("triangular" in t for t in texts)  # its look is described ...
+    assert not any("Flatiron Building" in t for t in texts)  # ... its name is never painted
+
+
+def test_street_ahead_and_cross_streets_follow_the_graph(world):
+    node = world.search("5th Ave & W 23rd St")[0].node
+    graph, i = world.locate(node)
+    up = compute_scene(world, graph, i, 29.0, "front")
+    assert up.road_ahead and up.ahead_street == "5th Avenue"
+    assert [o.street for o in up.openings][:1] and all(o.distance_m > 0 for o in up.openings)
+    sideways = compute_scene(world, graph, i, 29.0 + 45.0, "front")
+    assert not sideways.road_ahead  # facing the buildings between two streets
+    assert "5th Avenue" in up.street_signs
