@@ -1,0 +1,140 @@
+"""Browser tools: WebArena's action grammar on an episode's web environment.
+
+click, type, hover, press, scroll, new_tab, close_tab, tab_focus, goto, go_back, go_forward,
+plus snapshot and screenshot on demand (not counted as steps). Every tool returns the new
+observation. This module must not import Playwright: the server imports every tool group at
+start, and a server that never runs a web task never needs a browser.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Awaitable, Callable
+from typing import Annotated, Any, Literal
+
+from mcp.server.mcpserver import MCPServer
+from mcp_types import CallToolResult, ToolAnnotations
+from pydantic import Field
+
+from ..environment import EnvError, Observation
+from ..episodes import EpisodeManager
+from ..response import StepOutput, env_action
+from .core import EpisodeId
+
+Element = Annotated[
+    str,
+    Field(
+        min_length=1,
+        max_length=500,
+        description="an element id from the latest observation (\"12\" or \"[12]\"), or a role and name such as "
+        "\"link 'Tomato Bruschetta'\" or \"button 'Next'\" (append #2 for the second of several matches)",
+    ),
+]
+Url = Annotated[
+    str,
+    Field(
+        min_length=1,
+        max_length=2000,
+        description="a site-relative URL such as \"recipes:/\" or \"shop:/product/7\", an absolute URL of an embedded "
+        "site, or a path (\"/search?q=egg\") on the current site",
+    ),
+]
+Result = Annotated[CallToolResult, StepOutput]
+READ_ONLY = ToolAnnotations(read_only_hint=True, open_world_hint=False)
+ACTION = ToolAnnotations(read_only_hint=False, destructive_hint=False, open_world_hint=False)
+
+
+def _method(name: str, *args: Any, **kwargs: Any) -> Callable[[Any], Awaitable[Observation]]:
+    async def call(env: Any) -> Observation:
+        method = getattr(env, name, None)
+        if method is None:
+            raise EnvError(f"this episode's web environment ({type(env).__name__}) has no {name} action")
+        return await method(*args, **kwargs)
+
+    return call
+
+
+def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
+    async def act(episode_id: str, tool: str, args: dict[str, Any], method: str, *call_args: Any,
+                  counted: bool = True, **call_kwargs: Any) -> CallToolResult:
+        return await env_action(episodes, episode_id, tool, args, "web", _method(method, *call_args, **call_kwargs),
+                                counted=counted)
+
+    @mcp.tool(description="Click an element of the current page.", annotations=ACTION)
+    async def browser_click(episode_id: EpisodeId, element: Element) -> Result:
+        return await act(episode_id, "browser_click", {"element": element}, "click", element)
+
+    @mcp.tool(
+        description="Type text into a text field (replacing its content), optionally pressing Enter after. "
+        "For a drop-down (combobox), the text chooses the option with that label.",
+        annotations=ACTION,
+    )
+    async def browser_type(
+        episode_id: EpisodeId,
+        element: Element,
+        text: Annotated[str, Field(max_length=10_000)],
+        press_enter: bool = False,
+    ) -> Result:
+        args = {"element": element, "text": text, "press_enter": press_enter}
+        return await act(episode_id, "browser_type", args, "type", element, text, press_enter)
+
+    @mcp.tool(description="Move the mouse over an element (opens hover menus).", annotations=ACTION)
+    async def browser_hover(episode_id: EpisodeId, element: Element) -> Result:
+        return await act(episode_id, "browser_hover", {"element": element}, "hover", element)
+
+    @mcp.tool(description="Press a key or key combination on the focused element, e.g. Enter, Tab, ArrowDown, "
+              "Escape, Control+a.", annotations=ACTION)
+    async def browser_press(
+        episode_id: EpisodeId, keys: Annotated[str, Field(min_length=1, max_length=100)]
+    ) -> Result:
+        return await act(episode_id, "browser_press", {"keys": keys}, "press", keys)
+
+    @mcp.tool(description="Scroll the page by most of a screen in a direction.", annotations=ACTION)
+    async def browser_scroll(episode_id: EpisodeId, direction: Literal["up", "down", "left", "right"]) -> Result:
+        return await act(episode_id, "browser_scroll", {"direction": direction}, "scroll", direction)
+
+    @mcp.tool(description="Open a new tab (blank, or at a URL of an embedded site) and make it current.",
+              annotations=ACTION)
+    async def browser_new_tab(episode_id: EpisodeId, url: Url | None = None) -> Result:
+        return await act(episode_id, "browser_new_tab", {"url": url}, "new_tab", url)
+
+    @mcp.tool(description="Close the current tab; the tab to its left becomes current.", annotations=ACTION)
+    async def browser_close_tab(episode_id: EpisodeId) -> Result:
+        return await act(episode_id, "browser_close_tab", {}, "close_tab")
+
+    @mcp.tool(description="Make the tab with this index (from the observation's tab list, 0-based) current.",
+              annotations=ACTION)
+    async def browser_tab_focus(episode_id: EpisodeId, index: Annotated[int, Field(ge=0, le=100)]) -> Result:
+        return await act(episode_id, "browser_tab_focus", {"index": index}, "tab_focus", index)
+
+    @mcp.tool(description="Open a URL of an embedded site in the current tab.", annotations=ACTION)
+    async def browser_goto(episode_id: EpisodeId, url: Url) -> Result:
+        return await act(episode_id, "browser_goto", {"url": url}, "goto", url)
+
+    @mcp.tool(description="Go back to the previous page of the current tab.", annotations=ACTION)
+    async def browser_go_back(episode_id: EpisodeId) -> Result:
+        return await act(episode_id, "browser_go_back", {}, "go_back")
+
+    @mcp.tool(description="Go forward to the next page of the current tab (after going back).", annotations=ACTION)
+    async def browser_go_forward(episode_id: EpisodeId) -> Result:
+        return await act(episode_id, "browser_go_forward", {}, "go_forward")
+
+    @mcp.tool(
+        description="Show the current page's accessibility tree again (not counted as a step); viewport_only limits "
+        "it to what is on screen, max_chars sets the size budget.",
+        annotations=READ_ONLY,
+    )
+    async def browser_snapshot(
+        episode_id: EpisodeId,
+        viewport_only: bool | None = None,
+        max_chars: Annotated[int | None, Field(ge=500, le=500_000)] = None,
+    ) -> Result:
+        args = {"viewport_only": viewport_only, "max_chars": max_chars}
+        return await act(episode_id, "browser_snapshot", args, "snapshot", viewport_only, max_chars, counted=False)
+
+    @mcp.tool(
+        description="A screenshot of the current tab with each interactive element boxed and labelled by its id "
+        "(Set-of-Marks); not counted as a step.",
+        annotations=READ_ONLY,
+    )
+    async def browser_screenshot(episode_id: EpisodeId) -> Result:
+        return await act(episode_id, "browser_screenshot", {}, "screenshot", counted=False)

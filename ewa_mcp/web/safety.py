@@ -1,0 +1,141 @@
+"""Which URLs the browser may reach: the embedded sites, plus an explicit allowlist.
+
+Checked twice: ``UrlPolicy.check`` refuses a bad ``browser_goto``/``browser_new_tab`` before
+anything happens, and ``route_pattern()`` (a regex of everything *not* allowed) is installed with
+``context.route`` so links, redirects, sub-resources and popups to other places are aborted
+by the browser too. Link-local and cloud-metadata addresses are refused even when allowlisted.
+"""
+
+from __future__ import annotations
+
+import ipaddress
+import re
+from urllib.parse import urljoin, urlsplit
+
+METADATA_HOSTS = frozenset({"metadata", "metadata.google.internal", "instance-data", "instance-data.ec2.internal",
+                            "metadata.azure.com"})
+SAFE_INTERNAL = ("about:blank",)
+# Schemes named as such in the refusal (anything else before a colon is taken for a site name).
+OTHER_SCHEMES = frozenset({"file", "data", "javascript", "blob", "chrome", "about", "view-source", "ftp", "ws", "wss",
+                           "mailto", "filesystem", "chrome-extension", "devtools", "intent", "vbscript"})
+
+
+class BlockedUrlError(ValueError):
+    """A URL the browser must not visit; the message names the reason and the allowed sites."""
+
+
+def _origin(scheme: str, host: str, port: int | None) -> str:
+    default = {"http": 80, "https": 443}.get(scheme)
+    return f"{scheme}://{host}" + (f":{port}" if port and port != default else "")
+
+
+def _is_link_local_or_metadata(host: str) -> bool:
+    host = host.strip("[]").lower()
+    if host in METADATA_HOSTS:
+        return True
+    try:
+        address = ipaddress.ip_address(host)
+    except ValueError:
+        return False
+    if address.is_link_local:
+        return True
+    # fd00:ec2::254 is the IPv6 address of the EC2 metadata service
+    return address == ipaddress.ip_address("fd00:ec2::254")
+
+
+def normalize_origin(text: str) -> str:
+    """An allowlist entry as a canonical origin; raises ValueError naming the fix."""
+    parts = urlsplit(text.strip())
+    if parts.scheme not in ("http", "https") or not parts.hostname:
+        raise ValueError(f"allowlist entry {text!r} is not an http(s) origin; write it like http://127.0.0.1:9000")
+    if _is_link_local_or_metadata(parts.hostname):
+        raise ValueError(f"allowlist entry {text!r} is a link-local/cloud-metadata address, which is never allowed; "
+                         "remove it")
+    return _origin(parts.scheme, parts.hostname.lower(), parts.port)
+
+
+class UrlPolicy:
+    def __init__(self, site_urls: dict[str, str], extra_origins: list[str] | tuple[str, ...] = ()):
+        self.site_urls = {name: url.rstrip("/") for name, url in site_urls.items()}
+        self.site_origins = {normalize_origin(url): name for name, url in self.site_urls.items()}
+        self.extra_origins = [normalize_origin(o) for o in extra_origins]
+        self.allowed_origins = list(self.site_origins) + [o for o in self.extra_origins if o not in self.site_origins]
+
+    # ------------------------------------------------------------ addressing
+    def describe_allowed(self) -> str:
+        sites = ", ".join(f"{name}:/ ({url})" for name, url in self.site_urls.items())
+        extra = f"; also allowed: {', '.join(self.extra_origins)}" if self.extra_origins else ""
+        return f"the embedded sites are {sites or 'none'}{extra}"
+
+    def site_relative(self, url: str) -> str | None:
+        """'recipes:/recipe/r001' for a loopback URL of a site, else None."""
+        parts = urlsplit(url)
+        if parts.scheme not in ("http", "https") or not parts.hostname:
+            return None
+        site = self.site_origins.get(_origin(parts.scheme, parts.hostname.lower(), parts.port))
+        if site is None:
+            return None
+        rest = (parts.path or "/") + (f"?{parts.query}" if parts.query else "")
+        rest += f"#{parts.fragment}" if parts.fragment else ""
+        return f"{site}:{rest}"
+
+    def resolve(self, text: str, current_url: str | None = None) -> str:
+        """An absolute, allowed URL for what an agent or task wrote; raises BlockedUrlError."""
+        url = text.strip()
+        if not url:
+            raise BlockedUrlError("empty URL; " + self.describe_allowed())
+        if url in SAFE_INTERNAL:
+            return url
+        scheme, sep, rest = url.partition(":")
+        if sep and scheme in self.site_urls and not rest.startswith("//"):
+            return self.check(self.site_urls[scheme] + (rest if rest.startswith("/") else "/" + rest))
+        if url.startswith("/") and not url.startswith("//"):
+            if current_url and self.site_relative(current_url) is not None:
+                return self.check(urljoin(current_url, url))
+            raise BlockedUrlError(f"{url!r} is a path, but the current page is not on an embedded site; "
+                                  f"write it as site:{url} (e.g. home:{url}); " + self.describe_allowed())
+        lowered = scheme.lower()
+        if sep and lowered not in ("http", "https") and re.fullmatch(r"[a-z][a-z0-9+.-]*", lowered):
+            if lowered in OTHER_SCHEMES:
+                raise BlockedUrlError(f"{lowered}: URLs are refused: the browser may only open the embedded "
+                                      "sites; " + self.describe_allowed())
+            raise BlockedUrlError(f"unknown site {scheme!r} in {url!r}; " + self.describe_allowed())
+        if not sep:
+            raise BlockedUrlError(f"{url!r} is not a URL; write a site-relative URL such as home:/ or an "
+                                  "absolute http:// URL; " + self.describe_allowed())
+        return self.check(url)
+
+    def check(self, url: str) -> str:
+        """``url`` itself when the browser may load it; otherwise BlockedUrlError saying why."""
+        if url in SAFE_INTERNAL:
+            return url
+        parts = urlsplit(url)
+        if parts.scheme not in ("http", "https"):
+            raise BlockedUrlError(f"{parts.scheme or 'scheme-less'}: URLs are refused ({url[:80]!r}); "
+                                  + self.describe_allowed())
+        host = (parts.hostname or "").lower()
+        if not host:
+            raise BlockedUrlError(f"{url[:80]!r} has no host; " + self.describe_allowed())
+        if _is_link_local_or_metadata(host):
+            raise BlockedUrlError(f"{url[:80]!r} is a link-local/cloud-metadata address and is always refused; "
+                                  + self.describe_allowed())
+        try:
+            port = parts.port
+        except ValueError as exc:
+            raise BlockedUrlError(f"{url[:80]!r} has an invalid port; " + self.describe_allowed()) from exc
+        if _origin(parts.scheme, host, port) not in self.allowed_origins:
+            raise BlockedUrlError(f"{url[:80]!r} is not one of the embedded sites (only loopback sites are "
+                                  "reachable); " + self.describe_allowed() + "; use site-relative URLs like home:/")
+        return url
+
+    def is_allowed(self, url: str) -> bool:
+        try:
+            self.check(url)
+        except BlockedUrlError:
+            return False
+        return True
+
+    def route_pattern(self) -> re.Pattern[str]:
+        """Matches every URL the browser must not request (the allowed origins are excluded)."""
+        allowed = "|".join(re.escape(o) for o in self.allowed_origins) or "(?!)"
+        return re.compile(rf"^(?!(?:{allowed})(?:[/?#]|$))")

@@ -1,0 +1,130 @@
+"""A small fixture site that exercises every browser action; used by tests/web and benchmarks.
+
+It is served by the real ``SiteServer`` next to the homepage (``start_fixture_sites``) under
+the site name ``fixture``. Pages: a catalogue with a search form, a drop-down, a checkbox, a
+hover menu, a fetch-driven counter, popups, a download, external and metadata links, a page
+loading off-site images, a long page, and a per-episode visit counter keyed by the episode header (isolation checks).
+"""
+
+from __future__ import annotations
+
+import asyncio
+import html
+from collections import Counter
+from typing import Any
+
+from starlette.applications import Starlette
+from starlette.requests import Request
+from starlette.responses import HTMLResponse, JSONResponse, PlainTextResponse, RedirectResponse, Response
+from starlette.routing import Route
+
+from ..websites import serve
+from ..websites.common import SiteContext, episode_of
+
+ITEMS = {
+    1: ("Tomato Bruschetta", "Toasted bread topped with chopped tomato, basil and olive oil."),
+    2: ("Lentil Soup", "A thick soup of red lentils, carrot and cumin."),
+    3: ("Apple Crumble", "Baked apple slices under a buttery oat topping."),
+    4: ("Egg Fried Rice", "Day-old rice fried with egg, spring onion and soy sauce."),
+    5: ("Potato Salad", "Boiled potatoes with mustard dressing and chives."),
+}
+
+
+def _page(title: str, body: str) -> HTMLResponse:
+    return HTMLResponse(
+        "<!doctype html><html lang='en'><head><meta charset='utf-8'>"
+        f"<title>{html.escape(title)}</title><style>"
+        ".menu ul{display:none}.menu:hover ul{display:block}"
+        ".spacer{height:2400px}</style></head>"
+        f"<body><header><nav aria-label='Fixture'><a href='/'>Catalogue</a> <a href='/counter'>Counter</a> "
+        f"<a href='/long'>Long page</a></nav></header><main>{body}</main></body></html>"
+    )
+
+
+def create_app(ctx: SiteContext) -> Starlette:
+    visits: Counter[str] = Counter()  # per episode: proves the header reaches the site and state is keyed on it
+    clicks: Counter[str] = Counter()
+
+    async def index(request: Request) -> Response:
+        ctx.emit(episode_of(request), {"site": "fixture", "type": "page_view", "path": "/"})
+        items = "".join(f"<li><a href='/item/{i}'>{html.escape(name)}</a></li>" for i, (name, _) in ITEMS.items())
+        return _page("Fixture catalogue", f"""
+<h1>Catalogue</h1>
+<ul aria-label='Items'>{items}</ul>
+<form action='/search' method='get' role='search'>
+  <label>Search items <input name='q' placeholder='name'></label> <button type='submit'>Search</button>
+</form>
+<label>Diet <select name='diet'><option>Any</option><option>Vegetarian</option><option>Vegan</option></select></label>
+<label><input type='checkbox' name='fav'> Favourites only</label>
+<label>Code <input value='R-17' readonly></label>
+<div class='menu'><button aria-haspopup='true'>More</button><ul><li><a href='/item/3'>Hidden dessert</a></li></ul></div>
+<p><button id='ping'>Count click</button> <span id='count'>Clicked 0 times</span></p>
+<script>
+document.getElementById('ping').addEventListener('click', () => fetch('/api/click', {{method: 'POST'}})
+  .then((r) => r.json())
+  .then((d) => {{ document.getElementById('count').textContent = 'Clicked ' + d.clicks + ' times'; }}));
+</script>
+<p><button disabled>Unavailable</button> <button onclick="this.textContent='Done'">Mark done</button></p>
+<p><a href='/item/2' target='_blank'>Soup in a new tab</a> <button onclick="window.open('/item/4')">Open rice</button>
+<button onclick="alert('Saved!')">Save</button></p>
+<p><a href='/download'>Get the price list</a> <a href='http://example.com/'>External site</a>
+<a href='http://169.254.169.254/latest/meta-data/'>Metadata</a> <a href='/redirect-out'>Redirect out</a></p>
+""")
+
+    async def offsite(request: Request) -> Response:
+        return _page("Off-site resources", "<h1>Off-site resources</h1>"
+                                           "<img src='http://example.com/tracker.png' alt='tracker'>"
+                                           "<img src='http://169.254.169.254/pixel.png' alt='metadata pixel'>")
+
+    async def item(request: Request) -> Response:
+        n = int(request.path_params["n"])
+        if n not in ITEMS:
+            return _page("Not found", "<h1>No such item</h1>")
+        name, text = ITEMS[n]
+        nxt = n % len(ITEMS) + 1
+        return _page(name, f"<h1>{html.escape(name)}</h1><p>{html.escape(text)}</p>"
+                           f"<a href='/item/{nxt}'>Next item</a> <a href='#notes'>Notes</a><h2 id='notes'>Notes</h2>")
+
+    async def search(request: Request) -> Response:
+        q = request.query_params.get("q", "")
+        hits = [(i, name) for i, (name, _) in ITEMS.items() if q.lower() in name.lower()]
+        rows = "".join(f"<li><a href='/item/{i}'>{html.escape(name)}</a></li>" for i, name in hits)
+        return _page(f"Search: {q}", f"<h1>Results for {html.escape(q)}</h1><p>{len(hits)} found</p><ul>{rows}</ul>")
+
+    async def counter(request: Request) -> Response:
+        episode = episode_of(request)
+        visits[episode] += 1
+        return _page("Counter", f"<h1>Visits</h1><p>Episode {html.escape(episode)} visit {visits[episode]}</p>")
+
+    async def api_click(request: Request) -> Response:
+        episode = episode_of(request)
+        clicks[episode] += 1
+        await asyncio.sleep(0.05)  # a slow-ish API: the observation must still show its result
+        return JSONResponse({"clicks": clicks[episode]})
+
+    async def long_page(request: Request) -> Response:
+        return _page("Long page", "<h1>Top of the long page</h1><div class='spacer'></div>"
+                                  "<a href='/item/5'>Bottom link</a>")
+
+    async def download(request: Request) -> Response:
+        return PlainTextResponse("tomato,1.20\n", headers={"Content-Disposition": "attachment; filename=prices.csv"})
+
+    async def redirect_out(request: Request) -> Response:
+        return RedirectResponse("http://example.com/landing", status_code=302)
+
+    return Starlette(routes=[
+        Route("/", index), Route("/item/{n:int}", item), Route("/search", search), Route("/counter", counter),
+        Route("/api/click", api_click, methods=["POST"]), Route("/long", long_page), Route("/download", download),
+        Route("/redirect-out", redirect_out), Route("/offsite", offsite),
+    ])
+
+
+def start_fixture_sites(emit: Any = None) -> serve.SiteServer:
+    """The real SiteServer serving the homepage plus this site as ``fixture`` (for tests and benchmarks)."""
+    original = serve.SITES
+    serve.SITES = {"home": original["home"], "fixture": f"{__name__}:create_app"}
+    try:
+        server = serve.SiteServer(emit=emit)
+    finally:
+        serve.SITES = original
+    return server.start()
