@@ -30,6 +30,14 @@ def in_stock(product: Any, size: str, store_id: str) -> bool:
         return False
 
 
+def slots(out: list[Task]) -> Any:
+    """Task numbers to fill until a template has PER_TEMPLATE tasks; a rejected draw costs a try, not a slot."""
+    for _ in range(PER_TEMPLATE * 10):
+        if len(out) >= PER_TEMPLATE:
+            return
+        yield len(out)
+
+
 class Context:
     def __init__(self) -> None:
         self.world = get_world()
@@ -93,10 +101,7 @@ def _task(ctx: Context, tid: str, intent: str, start: Any, product: Any, size: s
 def cheapest_tasks(ctx: Context) -> list[Task]:
     out = []
     rng = rng_for("shopping", "cheapest")
-    for attempt in range(PER_TEMPLATE * 10):
-        n = len(out)
-        if n >= PER_TEMPLATE:
-            break
+    for n in slots(out):
         product = rng.choice(ctx.products)
         size = rng.choice(product.sizes).label
         store_id = catalog.cheapest_store(product.id, size)
@@ -117,10 +122,7 @@ def size_tasks(ctx: Context) -> list[Task]:
     out = []
     rng = rng_for("shopping", "size")
     candidates = [p for p in ctx.products if len([s for s in p.sizes if s.grams or s.ml]) >= 2]
-    for attempt in range(PER_TEMPLATE * 10):
-        n = len(out)
-        if n >= PER_TEMPLATE:
-            break
+    for n in slots(out):
         product = rng.choice(candidates)
         sizes = sorted([s for s in product.sizes if s.grams or s.ml], key=lambda s: s.grams or s.ml)
         target = sizes[rng.randrange(1, len(sizes))]
@@ -143,10 +145,7 @@ def calorie_tasks(ctx: Context) -> list[Task]:
     out = []
     rng = rng_for("shopping", "calories")
     foods = [p for p in ctx.products if p.nutrition is not None]
-    for attempt in range(PER_TEMPLATE * 10):
-        n = len(out)
-        if n >= PER_TEMPLATE:
-            break
+    for n in slots(out):
         a, b = rng.sample(foods, 2)
         if a.nutrition.calories == b.nutrition.calories:
             continue
@@ -168,10 +167,7 @@ def calorie_tasks(ctx: Context) -> list[Task]:
 def nearest_tasks(ctx: Context) -> list[Task]:
     out = []
     rng = rng_for("shopping", "nearest")
-    for attempt in range(PER_TEMPLATE * 10):
-        n = len(out)
-        if n >= PER_TEMPLATE:
-            break
+    for n in slots(out):
         product = rng.choice(ctx.products)
         size = rng.choice(product.sizes).label
         start = rng.choice(ctx.starts)
