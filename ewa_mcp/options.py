@@ -20,3 +20,6 @@ class EpisodeOptions(BaseModel):
         None, description="override the geolocation task's setting"
     )
     seed: int | None = Field(None, description="override the task's scene seed")
+    web_max_chars: int | None = Field(None, ge=500, le=500_000,
+                                      description="size budget of the web observation (default 24000 characters)")
+    web_viewport_only: bool | None = Field(None, description="web observation lists only elements in the viewport")

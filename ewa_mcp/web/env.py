@@ -13,29 +13,27 @@ import asyncio
 import base64
 import json
 import time
-from dataclasses import dataclass, field
 from typing import Any, ClassVar
 from urllib.parse import urldefrag
 
 from playwright.async_api import Error as PlaywrightError
 from playwright.async_api import TimeoutError as PlaywrightTimeoutError
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic import ValidationError
 
 from ..environment import EnvError, Environment, Observation
 from ..websites.common import EPISODE_HEADER
 from ..websites.serve import site_service
 from .aria import AriaNode, parse_snapshot
 from .chromium import BrowserService, ChromiumNotFoundError, chromium_service
+from .config import BrowserConfig
 from .elements import ElementRefError, ElementRegistry, IdRef, parse_element, resolve_role_name
-from .render import EDITABLE_ROLES, RenderedTree, render_tree
+from .observation import PAGE_INFO_JS, TabLine, build_observation
+from .render import EDITABLE_ROLES, render_tree
 from .safety import BlockedUrlError, UrlPolicy, normalize_origin
 from .settle import PAGE_HOOKS_JS, PageActivity
+from .tabs import Tab, first_line, is_closed_error, timeout_reason
 from .som import DRAW_MARKS_JS, REMOVE_MARKS_JS, marks_payload
 
-PAGE_INFO_JS = (
-    "() => [document.title, Math.round(scrollX), Math.round(scrollY), innerWidth, innerHeight,"
-    " document.documentElement.scrollWidth, document.documentElement.scrollHeight]"
-)
 SCROLL_JS = """(dir) => {
   const x = scrollX, y = scrollY;
   const dx = dir === 'left' ? -0.8 * innerWidth : dir === 'right' ? 0.8 * innerWidth : 0;
@@ -44,63 +42,6 @@ SCROLL_JS = """(dir) => {
   return [x !== scrollX || y !== scrollY, Math.round(scrollY), document.documentElement.scrollHeight, innerHeight];
 }"""
 MAX_NOTICES = 12
-
-
-class BrowserConfig(BaseModel):
-    """``services.config["browser"]`` (ServerConfig.services): server-wide browser settings."""
-
-    model_config = ConfigDict(extra="forbid")
-
-    executable_path: str | None = None
-    headless: bool = True
-    allow_origins: list[str] = Field(default_factory=list, description="extra http(s) origins the browser may reach")
-    viewport_width: int = Field(1280, ge=320, le=3840)
-    viewport_height: int = Field(720, ge=240, le=2160)
-    max_chars: int = Field(24_000, ge=500, le=500_000, description="accessibility tree budget per observation")
-    viewport_only: bool = False
-    action_timeout_s: float = Field(5.0, gt=0, le=120)
-    navigation_timeout_s: float = Field(15.0, gt=0, le=300)
-    settle_timeout_s: float = Field(5.0, gt=0, le=120)
-
-
-@dataclass
-class Tab:
-    uid: int
-    page: Any
-    activity: PageActivity
-    generation: int = 0  # bumped when the tab shows a new document: ids of older documents are stale
-    last_url: str = "about:blank"
-    last_title: str = ""
-    nodes: list[AriaNode] = field(default_factory=list)  # the latest snapshot, in document order
-    ref_ids: dict[str, int] = field(default_factory=dict)  # aria ref -> element id, latest snapshot
-    snapshot_generation: int = -1
-    roots: list[AriaNode] = field(default_factory=list)
-    crashed: bool = False
-    closed: bool = False
-    closing: bool = False  # closed by us (browser_close_tab), not by the page
-    # A tab we open starts at about:blank; its history is reset after the first page so that
-    # going back never lands on that blank entry.
-    blank_start: bool = False
-    cdp: Any = None  # a CDP session (history reset, screenshots), made on first use
-
-
-def _first_line(exc: BaseException) -> str:
-    text = str(exc).strip()
-    return text.splitlines()[0] if text else type(exc).__name__
-
-
-def _timeout_reason(exc: BaseException) -> str:
-    """The most telling line of Playwright's call log ("element is not visible", ...)."""
-    lines = [ln.strip(" -") for ln in str(exc).splitlines() if ln.strip().startswith("-")]
-    reasons = [ln for ln in lines if not ln.startswith(("waiting for", "locator resolved", "attempting", "retrying",
-                                                        "waiting ", "scrolling", "done scrolling"))]
-    return (reasons or lines or [_first_line(exc)])[-1]
-
-
-def _is_closed_error(exc: BaseException) -> bool:
-    text = str(exc)
-    return type(exc).__name__ == "TargetClosedError" or "has been closed" in text or "Target crashed" in text \
-        or "Browser closed" in text or "Connection closed" in text
 
 
 class BrowserEnvironment(Environment):
@@ -275,10 +216,6 @@ class BrowserEnvironment(Environment):
         # Only a fragment change keeps the document (and so its elements); anything else is a new page.
         if not (urldefrag(url)[0] == urldefrag(old)[0] and url != old):
             tab.generation += 1
-            # Playwright injects its helper script into a new document on first use, which costs
-            # tens of milliseconds; starting that now overlaps it with waiting for the page to load.
-            warm = asyncio.ensure_future(tab.page.locator(":root").count())
-            warm.add_done_callback(lambda f: f.cancelled() or f.exception())
         tab.last_url = url
         if not self._restoring and url != "about:blank" and not url.startswith("chrome-error:"):
             self.history.append(url)
@@ -334,9 +271,9 @@ class BrowserEnvironment(Environment):
         except PlaywrightTimeoutError:
             self._notice(f"{url} did not finish loading within {self.config.navigation_timeout_s:g} s")
         except PlaywrightError as exc:
-            if _is_closed_error(exc):
+            if is_closed_error(exc):
                 raise
-            reason = _first_line(exc)
+            reason = first_line(exc)
             if self._blocked_nav is not None:
                 return  # a redirect to a refused URL: _perform reports it
             if "ERR_ABORTED" in reason:
@@ -453,15 +390,15 @@ class BrowserEnvironment(Environment):
             raise
         except PlaywrightTimeoutError as exc:
             raise EnvError(f"{action_name} did not complete within {self.config.action_timeout_s:g} s: "
-                           f"{_timeout_reason(exc)}. The element may be hidden, covered or disabled; scroll it into "
+                           f"{timeout_reason(exc)}. The element may be hidden, covered or disabled; scroll it into "
                            "view, close what covers it, or choose another element") from exc
         except PlaywrightError as exc:
-            if _is_closed_error(exc):
+            if is_closed_error(exc):
                 await self._ensure_alive()
-                raise EnvError(f"the browser tab closed or crashed during {action_name}; it was restored (tabs "
-                               "reopened at their last URLs). Look at the new observation (get_observation) and "
-                               "repeat the action if it is still needed") from exc
-            raise EnvError(f"{action_name} failed: {_first_line(exc)}") from exc
+                raise EnvError(f"the browser tab closed or crashed during {action_name}; it is restored with "
+                               "the tabs reopened at their last URLs. Look at the page again (get_observation) "
+                               "and repeat the action if it is still needed") from exc
+            raise EnvError(f"{action_name} failed: {first_line(exc)}") from exc
 
     async def _settle_and_observe(self, action_name: str, tab: Tab, mark: tuple[int, int],
                                   popups_before: int | None) -> Observation:
@@ -490,7 +427,7 @@ class BrowserEnvironment(Environment):
             await self._wait_loaded(current)
         if (waited or current is not tab or isinstance(collected, BaseException)
                 or tab.snapshot_generation != tab.generation):
-            if isinstance(collected, BaseException) and _is_closed_error(collected):
+            if isinstance(collected, BaseException) and is_closed_error(collected):
                 raise collected
             collected = await self._collect(current, want_image)
         elif not want_image:
@@ -663,7 +600,7 @@ class BrowserEnvironment(Environment):
                     await tab.page.keyboard.press(keys)
             except PlaywrightError as exc:
                 if "Unknown key" in str(exc):
-                    raise EnvError(f"unknown key in {keys!r}: {_first_line(exc)}; use key names such as Enter, Tab, "
+                    raise EnvError(f"unknown key in {keys!r}: {first_line(exc)}; use key names such as Enter, Tab, "
                                    "ArrowDown, PageDown, Escape, Backspace, or combinations like Control+a") from exc
                 raise
 
@@ -766,7 +703,7 @@ class BrowserEnvironment(Environment):
                     self._main_world(tab, f"({PAGE_INFO_JS})()") if facts else asyncio.sleep(0),
                 ))
             except PlaywrightError as exc:
-                if _is_closed_error(exc) or attempt == 2:
+                if is_closed_error(exc) or attempt == 2:
                     raise
                 # "Execution context was destroyed": a navigation is under way; let it land.
                 await self._wait_loaded(tab)
@@ -848,61 +785,20 @@ class BrowserEnvironment(Environment):
 
     async def _present(self, tab: Tab, collected: tuple[list[Any], bytes], *, viewport_only: bool | None = None,
                        max_chars: int | None = None, image_requested: bool = False) -> Observation:
-        info, png = collected
-        mode = self.options.get("observation", "text")
-        title, sx, sy, vw, vh, doc_w, doc_h = info
+        facts, png = collected
         viewport_only = self._viewport_only(viewport_only)
         budget = int(max_chars or self.options.get("web_max_chars") or self.config.max_chars)
-        rendered: RenderedTree = render_tree(
-            tab.roots,
-            lambda n: tab.ref_ids[n.ref],
-            title=title, viewport=(vw, vh), viewport_only=viewport_only, max_chars=budget,
-        )
-        images = [png] if png else []
-
-        other_titles = await asyncio.gather(*[self._title_of(t) for t in self.tabs])
-        tabs = [{"index": i, "title": other_titles[i], "url": t.page.url if not t.page.is_closed() else t.last_url,
-                 "site_url": self._site_url(t.page.url if not t.page.is_closed() else t.last_url),
-                 "active": i == self.active} for i, t in enumerate(self.tabs)]
+        rendered = render_tree(tab.roots, lambda n: tab.ref_ids[n.ref], title=facts[0], viewport=(facts[3], facts[4]),
+                               viewport_only=viewport_only, max_chars=budget)
+        titles = await asyncio.gather(*[self._title_of(t) for t in self.tabs])
+        lines = []
+        for i, t in enumerate(self.tabs):
+            url = t.last_url if t.page.is_closed() else t.page.url
+            lines.append(TabLine(i, titles[i], url, self._site_url(url), i == self.active))
         notices, self._notices = self._notices, []
-        url = tab.page.url
-        header = [f"Tab {t['index']}{' (current)' if t['active'] else ''}: {t['title'] or '(untitled)'} — "
-                  f"{t['site_url'] or t['url']}" for t in tabs]
-        header.append(f"URL: {url}" + (f" ({self._site_url(url)})" if self._site_url(url) else ""))
-        if doc_h > vh or doc_w > vw:
-            header.append(f"Scroll: viewing y {sy}–{sy + vh} of {doc_h} px"
-                          + (f", x {sx}–{sx + vw} of {doc_w} px" if doc_w > vw else ""))
-        if notices:
-            header.append("Notices:\n" + "\n".join(f"- {n}" for n in notices))
-        if image_requested or mode == "vision":  # the image carries the page: list what its labels name
-            body = "Marked elements (see the screenshot):\n" + "\n".join(
-                f"[{m.id}] {m.role} '{m.name}'" for m in rendered.marks)
-        else:
-            scope = "visible part of the page" if viewport_only else "whole page"
-            body = f"Accessibility tree ({scope}):\n{rendered.text}"
-            if rendered.truncated:
-                body += (f"\n[truncated: {rendered.lines} of {rendered.total_lines} lines shown, limit {budget} "
-                         "characters; scroll and use browser_snapshot(viewport_only=true), or ask for a larger "
-                         "max_chars]")
-        text = "\n".join(header) + "\n\n" + body
-        data = {
-            "kind": "browser",
-            "tabs": tabs,
-            "active_tab": self.active,
-            "url": url,
-            "site_url": self._site_url(url),
-            "title": title,
-            "scroll": {"x": sx, "y": sy, "viewport_width": vw, "viewport_height": vh,
-                       "page_width": doc_w, "page_height": doc_h},
-            "viewport_only": viewport_only,
-            "tree": rendered.text,
-            "truncated": rendered.truncated,
-            "lines_shown": rendered.lines,
-            "lines_total": rendered.total_lines,
-            "marks": len(rendered.marks),
-            "notices": notices,
-        }
-        return Observation(text=text, data=data, images=images)
+        return build_observation(tabs=lines, facts=facts, url=tab.page.url, site_url=self._site_url(tab.page.url),
+                                 rendered=rendered, notices=notices, mode=self.options.get("observation", "text"),
+                                 viewport_only=viewport_only, budget=budget, png=png, marks_only=image_requested)
 
     async def _title_of(self, tab: Tab) -> str:
         if tab is self._tab() or tab.page.is_closed():
