@@ -57,6 +57,21 @@ def episode_of(request: Request) -> str:
     return ANONYMOUS
 
 
+class SiteEvents:
+    """A site's event emitter: every event names its site and goes to the requesting episode's log."""
+
+    def __init__(self, ctx: SiteContext, site: str):
+        self.ctx, self.site = ctx, site
+
+    def __call__(self, request: Request, type: str, **fields: Any) -> None:  # noqa: A002 - the event's key
+        self.ctx.emit(episode_of(request), {"site": self.site, "type": type, **fields})
+
+    def page_view(self, request: Request, **fields: Any) -> None:
+        if request.url.query:
+            fields.setdefault("query", request.url.query)
+        self(request, "page_view", path=request.url.path, **fields)
+
+
 def make_templates(site_dir: Path, ctx: SiteContext, site: str) -> Jinja2Templates:
     loader = ChoiceLoader([FileSystemLoader(site_dir / "templates"), FileSystemLoader(COMMON_TEMPLATES)])
     env = Environment(loader=loader, autoescape=select_autoescape(["html", "xml"]))

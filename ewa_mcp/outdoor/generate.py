@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .address import normalize_street, parse_address
-from .geo import LocalFrame, angle_diff, bearing_deg, haversine_m, opaque_id
+from .geo import LocalFrame, bearing_deg, haversine_m, opaque_id
 from .specs.base import CitySpec
 
 DATA_DIR = Path(__file__).resolve().parent / "data"

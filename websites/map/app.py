@@ -19,7 +19,7 @@ from starlette.requests import Request
 from starlette.responses import Response
 from starlette.routing import Route
 
-from ..common import SiteContext, episode_of, exception_handlers, make_templates
+from ..common import SiteContext, SiteEvents, exception_handlers, make_templates
 from .places import Resolution, WorldAdapter
 from .svgmap import Marker, render_map_svg
 
@@ -43,14 +43,8 @@ def create_app(ctx: SiteContext, world: Any = None) -> Starlette:
         # Load the street graphs in the background now, so the first map page does not pay for it.
         threading.Thread(target=lambda: places.world, name="ewa-map-world", daemon=True).start()
 
-    def emit(request: Request, event_type: str, **fields: Any) -> None:
-        ctx.emit(episode_of(request), {"site": "map", "type": event_type, **fields})
-
-    def page_view(request: Request) -> None:
-        fields: dict[str, Any] = {"path": request.url.path}
-        if request.url.query:
-            fields["query"] = request.url.query
-        emit(request, "page_view", **fields)
+    emit = SiteEvents(ctx, "map")
+    page_view = emit.page_view
 
     def render(request: Request, template: str, status: int = 200, **context: Any) -> Response:
         context.setdefault("cities", places.cities())

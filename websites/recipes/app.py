@@ -21,7 +21,7 @@ from starlette.requests import Request
 from starlette.responses import RedirectResponse, Response
 from starlette.routing import Route
 
-from ..common import SiteContext, episode_of, exception_handlers, make_templates
+from ..common import SiteContext, SiteEvents, exception_handlers, make_templates
 from .catalog import (
     DIET_LABELS,
     DIFFICULTY_LABELS,
@@ -58,8 +58,10 @@ def create_app(ctx: SiteContext) -> Starlette:
     catalog = load_catalog()
     svg_cache: dict[str, bytes] = {}
 
+    events = SiteEvents(ctx, SITE)
+
     def emit(request: Request, event: dict[str, Any]) -> None:
-        ctx.emit(episode_of(request), {"site": SITE, **event})
+        events(request, **event)
 
     async def index(request: Request) -> Response:
         try:

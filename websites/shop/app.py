@@ -18,7 +18,7 @@ from starlette.requests import Request
 from starlette.responses import RedirectResponse, Response
 from starlette.routing import Route
 
-from ..common import SiteContext, episode_of, exception_handlers, make_templates
+from ..common import SiteContext, SiteEvents, episode_of, exception_handlers, make_templates
 from . import catalog
 from .state import MAX_QUANTITY, ShopError, ShopState
 
@@ -73,14 +73,8 @@ def create_app(ctx: SiteContext) -> Starlette:
     category_names = {c.slug: c.name for c in categories}
     stores = catalog.load_stores()
 
-    def emit(request: Request, event_type: str, **fields: Any) -> None:
-        ctx.emit(episode_of(request), {"site": "shop", "type": event_type, **fields})
-
-    def page_view(request: Request) -> None:
-        fields: dict[str, Any] = {"path": request.url.path}
-        if request.url.query:
-            fields["query"] = request.url.query
-        emit(request, "page_view", **fields)
+    emit = SiteEvents(ctx, "shop")
+    page_view = emit.page_view
 
     def render(request: Request, template: str, status: int = 200, **context: Any) -> Response:
         episode = episode_of(request)

@@ -19,10 +19,10 @@ from starlette.requests import Request
 from starlette.responses import RedirectResponse, Response
 from starlette.routing import Route
 
-from ..common import SiteContext, episode_of, exception_handlers, make_templates
+from ..common import SiteContext, SiteEvents, episode_of, exception_handlers, make_templates
 from .markup import render_body, render_inline
 from .search import MAX_QUERY_CHARS, QueryError, SearchIndex
-from .store import ARTICLES_DIR, Article, ArticleIndex, index, normalize_title
+from .store import ARTICLES_DIR, ArticleIndex, index, normalize_title
 
 SITE_DIR = Path(__file__).resolve().parent
 PAGE_SIZE = 20
@@ -76,8 +76,10 @@ def create_app(ctx: SiteContext, articles_dir: Path = ARTICLES_DIR) -> Starlette
             return article.url_path, True
         return f"/search?q={quote(target)}", False
 
+    events = SiteEvents(ctx, "wiki")
+
     def emit(request: Request, event: dict[str, Any]) -> None:
-        ctx.emit(episode_of(request), {"site": "wiki", **event})
+        events(request, **event)
 
     def page(request: Request, name: str, context: dict[str, Any], status: int = 200) -> Response:
         return templates.TemplateResponse(request, name, context, status_code=status)
