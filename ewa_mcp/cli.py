@@ -101,15 +101,12 @@ def cmd_tasks(args: argparse.Namespace) -> int:
 
 
 def cmd_eval(args: argparse.Namespace) -> int:
-    import anyio
-
     from .evaluation.agents import NoopAgent, OracleAgent, RandomAgent, ReplayAgent, ReplayError, load_replay
-    from .evaluation.runner import EvalError, run_eval, select_tasks
-    from .paths import runs_dir, tasks_dir
-    from .records import new_run_id
+    from .evaluation.runner import EvalError, play, run_dir_from, select_tasks, task_dirs_from
+    from .graders import grade_run, render_report
     from .taskmodel import TaskStore
 
-    task_dirs = [Path(p) for p in args.tasks_dir] if args.tasks_dir else [tasks_dir()]
+    task_dirs = task_dirs_from(args.tasks_dir)
     try:
         if args.agent == "replay":
             if not args.replay:
@@ -117,61 +114,38 @@ def cmd_eval(args: argparse.Namespace) -> int:
             agent = ReplayAgent(load_replay(Path(args.replay)))
         else:
             agent = {"oracle": OracleAgent, "noop": NoopAgent, "random": RandomAgent}[args.agent]()
-        store = TaskStore(task_dirs)
         patterns = args.tasks
         if args.agent == "replay" and not patterns:
             patterns = sorted(agent.calls)  # a replay runs the tasks it has calls for
-        tasks = select_tasks(store, patterns, args.sample, args.domain)
+        tasks = select_tasks(TaskStore(task_dirs), patterns, args.sample, args.domain)
     except (EvalError, ReplayError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    run_dir = Path(args.run_dir) if args.run_dir else runs_dir() / new_run_id()
+    run_dir = run_dir_from(args.run_dir)
     print(f"{agent.name}: {len(tasks)} tasks, {args.workers} worker(s), {args.transport}; recording to {run_dir}",
           file=sys.stderr)
-    summary = anyio.run(lambda: run_eval(tasks, agent, transport=args.transport, workers=args.workers,
-                                         run_dir=run_dir, task_dirs=task_dirs, progress=not args.quiet))
-    failed = [o for o in summary.outcomes if o.failure]
-    for o in failed[:10]:
-        print(f"  could not play {o.task_id}: {o.failure}", file=sys.stderr)
-    print(f"played {len(summary.outcomes) - len(failed)}/{len(summary.outcomes)} episodes in {summary.seconds:.1f}s",
-          file=sys.stderr)
-    try:
-        from .graders import render_report
-        from .graders import grade_run
-    except ImportError:
-        print("(graders not available in this build; grade later with ewa-grade RUN_DIR)", file=sys.stderr)
-        return 1 if failed else 0
-    report = grade_run(run_dir)
-    print(render_report(report, fmt=args.format))
-    return 1 if failed else 0
+    summary = play(tasks, agent, run_dir=run_dir, task_dirs=task_dirs, transport=args.transport,
+                   workers=args.workers, progress=not args.quiet)
+    print(render_report(grade_run(run_dir), fmt=args.format))
+    return 1 if any(o.failure for o in summary.outcomes) else 0
 
 
 def cmd_play(args: argparse.Namespace) -> int:
-    import anyio
-
     from .evaluation.human import HumanAgent
-    from .evaluation.runner import run_eval
-    from .paths import runs_dir, tasks_dir
-    from .records import new_run_id
+    from .evaluation.runner import play, run_dir_from, task_dirs_from
+    from .graders import grade_run, render_report
     from .taskmodel import TaskStore
 
-    task_dirs = [Path(p) for p in args.tasks_dir] if args.tasks_dir else [tasks_dir()]
+    task_dirs = task_dirs_from(args.tasks_dir)
     task = TaskStore(task_dirs).get(args.task_id)
     if task is None:
         print(f"error: unknown task id {args.task_id!r}; see `ewa-mcp tasks list`", file=sys.stderr)
         return 2
-    run_dir = Path(args.run_dir) if args.run_dir else runs_dir() / ("human-" + new_run_id())
-    summary = anyio.run(lambda: run_eval([task], HumanAgent(), run_dir=run_dir, task_dirs=task_dirs,
-                                         progress=False))
-    outcome = summary.outcomes[0]
+    run_dir = run_dir_from(args.run_dir, prefix="human-")
+    outcome = play([task], HumanAgent(), run_dir=run_dir, task_dirs=task_dirs, progress=False).outcomes[0]
     if outcome.failure:
-        print(f"error: {outcome.failure}", file=sys.stderr)
         return 1
     print(f"recorded: {run_dir / (outcome.episode_id or '')}")
-    try:
-        from .graders import grade_run, render_report
-    except ImportError:
-        return 0
     print(render_report(grade_run(run_dir), fmt="table"))
     return 0
 

@@ -20,8 +20,7 @@ async def _demo(run_dir: Path, task_id: str) -> int:
     async with Client(mcp) as client:
         tools = await client.list_tools()
         print(f"server exposes {len(tools.tools)} tools: {', '.join(t.name for t in tools.tools)}\n")
-        calls = [("list_tasks", {"domain": "demo", "limit": 5})]
-        r = await client.call_tool(*calls[0])
+        r = await client.call_tool("list_tasks", {"domain": "demo", "limit": 5})
         print(f"> list_tasks\n{_first_text(r)}\n")
         r = await client.call_tool("start_episode", {"task_id": task_id})
         if r.is_error:

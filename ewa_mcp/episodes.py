@@ -20,7 +20,7 @@ from mcp.server.mcpserver.exceptions import ToolError
 
 from . import registry
 from .environment import Environment, Observation
-from .records import EpisodeRecorder, new_run_id
+from .records import EpisodeRecorder
 from .services import Services
 from .taskmodel import SCHEMA_VERSION, Task, TaskStore
 
@@ -166,9 +166,6 @@ class EpisodeManager:
             )
         return episode
 
-    def list(self) -> list[Episode]:
-        return list(self._episodes.values())
-
     # ------------------------------------------------------------ acting
     async def act(
         self,
@@ -308,6 +305,3 @@ class EpisodeManager:
                 async with episode.lock:
                     await self._end(episode, "aborted", "the server shut down before the episode finished")
 
-
-def default_run_dir(root: Path) -> Path:
-    return root / new_run_id()

@@ -14,10 +14,8 @@ from typing import Any
 
 import anthropic
 
-from ewa_mcp.evaluation.llm import (LLMAgent, ToolOutcome, ToolRequest, ToolSpec, example_parser,
+from ewa_mcp.evaluation.llm import (NUDGE, LLMAgent, ToolOutcome, ToolRequest, ToolSpec, example_parser,
                                     parse_arguments, run_example)
-
-NUDGE = "Act with a tool call. When the task is complete, call finish_episode."
 
 
 class ClaudeAdapter:
@@ -38,6 +36,9 @@ class ClaudeAdapter:
         return [ToolRequest(id=b.id, name=b.name, arguments=parse_arguments(b.input))
                 for b in response.content if b.type == "tool_use"]
 
+    async def aclose(self) -> None:
+        await self.client.close()
+
     def add_results(self, outcomes: list[ToolOutcome]) -> None:
         if not outcomes:
             self.messages.append({"role": "user", "content": NUDGE})
@@ -54,8 +55,12 @@ class ClaudeAdapter:
 
 def main(argv: list[str] | None = None) -> int:
     args = example_parser("Claude plays ewa-mcp tasks over MCP.", "claude-sonnet-4-5").parse_args(argv)
-    client = anthropic.AsyncAnthropic(base_url=args.base_url) if args.base_url else anthropic.AsyncAnthropic()
-    agent = LLMAgent(lambda: ClaudeAdapter(client, args.model, args.max_tokens), name=f"claude:{args.model}",
+    # One SDK client per episode, made and closed inside the episode's event loop.
+    def make_client() -> anthropic.AsyncAnthropic:
+        return anthropic.AsyncAnthropic(base_url=args.base_url) if args.base_url else anthropic.AsyncAnthropic()
+
+    agent = LLMAgent(lambda: ClaudeAdapter(make_client(), args.model, args.max_tokens),
+                     name=f"claude:{args.model}",
                      send_images=not args.no_images)
     return run_example(args, agent)
 

@@ -13,10 +13,8 @@ from typing import Any
 
 import openai
 
-from ewa_mcp.evaluation.llm import (LLMAgent, ToolOutcome, ToolRequest, ToolSpec, example_parser,
+from ewa_mcp.evaluation.llm import (NUDGE, LLMAgent, ToolOutcome, ToolRequest, ToolSpec, example_parser,
                                     parse_arguments, run_example)
-
-NUDGE = "Act with a tool call. When the task is complete, call finish_episode."
 
 
 class OpenAIAdapter:
@@ -43,6 +41,9 @@ class OpenAIAdapter:
         return [ToolRequest(id=c.id, name=c.function.name, arguments=parse_arguments(c.function.arguments))
                 for c in calls]
 
+    async def aclose(self) -> None:
+        await self.client.close()
+
     def add_results(self, outcomes: list[ToolOutcome]) -> None:
         if not outcomes:
             self.messages.append({"role": "user", "content": NUDGE})
@@ -60,8 +61,12 @@ class OpenAIAdapter:
 
 def main(argv: list[str] | None = None) -> int:
     args = example_parser("An OpenAI model plays ewa-mcp tasks over MCP.", "gpt-4o").parse_args(argv)
-    client = openai.AsyncOpenAI(base_url=args.base_url) if args.base_url else openai.AsyncOpenAI()
-    agent = LLMAgent(lambda: OpenAIAdapter(client, args.model, args.max_tokens), name=f"openai:{args.model}",
+    # One SDK client per episode, made and closed inside the episode's event loop.
+    def make_client() -> openai.AsyncOpenAI:
+        return openai.AsyncOpenAI(base_url=args.base_url) if args.base_url else openai.AsyncOpenAI()
+
+    agent = LLMAgent(lambda: OpenAIAdapter(make_client(), args.model, args.max_tokens),
+                     name=f"openai:{args.model}",
                      send_images=not args.no_images)
     return run_example(args, agent)
 

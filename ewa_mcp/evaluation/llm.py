@@ -25,6 +25,8 @@ tasks end with submit_location). You have a limited number of steps; do not repe
 """
 
 HIDDEN_TOOLS = {"list_tasks", "start_episode"}
+# What an adapter says when the model answers in prose instead of calling a tool.
+NUDGE = "Act with a tool call. When the task is complete, call finish_episode."
 
 
 @dataclass
@@ -57,6 +59,10 @@ class ModelAdapter(Protocol):
         ...
 
     def add_results(self, outcomes: list[ToolOutcome]) -> None: ...
+
+    async def aclose(self) -> None:
+        """Close the API client inside the event loop that used it."""
+        ...
 
 
 def tool_specs(tools: list[Any]) -> list[ToolSpec]:
@@ -95,8 +101,16 @@ class LLMAgent:
 
     async def play(self, s: Session) -> None:
         tools = tool_specs((await s.client.list_tools()).tools)
-        allowed = {t.name for t in tools}
         adapter = self.adapter_factory()
+        try:
+            await self._loop(s, adapter, tools)
+        finally:
+            # An SDK client left open is closed later by the garbage collector, in whatever event loop
+            # is running then (or none): close it here, in the loop that used it.
+            await adapter.aclose()
+
+    async def _loop(self, s: Session, adapter: Any, tools: list[ToolSpec]) -> None:
+        allowed = {t.name for t in tools}
         start_text, _ = _render(s.start)
         adapter.begin(SYSTEM_PROMPT, tools, f"{start_text}\n\nThe task: {s.task.intent}")
         turns = self.max_turns or s.task.step_limit
@@ -161,28 +175,20 @@ def example_parser(description: str, default_model: str):
 
 
 def run_example(args: Any, agent: LLMAgent) -> int:
-    """Select tasks, play them through the MCP server, write the run directory, print the grade."""
+    """Select tasks, play them through the MCP server and leave a run directory for ewa-grade."""
     import sys
-    from pathlib import Path
 
-    import anyio
-
-    from ..paths import runs_dir, tasks_dir
-    from ..records import new_run_id
     from ..taskmodel import TaskStore
-    from .runner import EvalError, run_eval, select_tasks
+    from .runner import EvalError, play, run_dir_from, select_tasks, task_dirs_from
 
-    task_dirs = [Path(p) for p in args.tasks_dir] if args.tasks_dir else [tasks_dir()]
+    task_dirs = task_dirs_from(args.tasks_dir)
     try:
         tasks = select_tasks(TaskStore(task_dirs), args.tasks, args.sample, args.domain)
     except EvalError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    run_dir = Path(args.run_dir) if args.run_dir else runs_dir() / new_run_id()
-    summary = anyio.run(lambda: run_eval(tasks, agent, transport=args.transport, workers=args.workers,
-                                         run_dir=run_dir, task_dirs=task_dirs, progress=not args.quiet))
-    failed = [o for o in summary.outcomes if o.failure]
-    for o in failed:
-        print(f"could not play {o.task_id}: {o.failure}", file=sys.stderr)
+    run_dir = run_dir_from(args.run_dir)
+    summary = play(tasks, agent, run_dir=run_dir, task_dirs=task_dirs, transport=args.transport,
+                   workers=args.workers, progress=not args.quiet)
     print(f"run directory: {run_dir}  (grade it: ewa-grade {run_dir})")
-    return 1 if failed else 0
+    return 1 if any(o.failure for o in summary.outcomes) else 0

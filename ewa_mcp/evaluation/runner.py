@@ -183,3 +183,29 @@ async def run_eval(tasks: list[Task], agent: Any, *, transport: str = "inprocess
                 tg.start_soon(worker)
     summary.seconds = time.monotonic() - started
     return summary
+
+
+def task_dirs_from(given: list[str] | None) -> list[Path]:
+    from ..paths import tasks_dir
+
+    return [Path(p) for p in given] if given else [tasks_dir()]
+
+
+def run_dir_from(given: str | None, prefix: str = "") -> Path:
+    from ..paths import runs_dir
+    from ..records import new_run_id
+
+    return Path(given) if given else runs_dir() / (prefix + new_run_id())
+
+
+def play(tasks: list[Task], agent: Any, *, run_dir: Path, task_dirs: list[Path], transport: str = "inprocess",
+         workers: int = 1, progress: bool = True) -> EvalSummary:
+    """Run the episodes (blocking) and report on stderr the ones that could not be played."""
+    summary = anyio.run(lambda: run_eval(tasks, agent, transport=transport, workers=workers, run_dir=run_dir,
+                                         task_dirs=task_dirs, progress=progress))
+    failed = [o for o in summary.outcomes if o.failure]
+    for o in failed[:10]:
+        sys.stderr.write(f"  could not play {o.task_id}: {o.failure}\n")
+    sys.stderr.write(f"played {len(summary.outcomes) - len(failed)}/{len(summary.outcomes)} episodes in "
+                     f"{summary.seconds:.1f}s\n")
+    return summary

@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
-from typing import Any
+from typing import Annotated, Any
 
 from mcp.server.mcpserver import MCPServer
 from pydantic import Field
-from typing_extensions import Annotated
+
 
 from ewa_mcp.environment import EnvError, Environment, Observation
 from ewa_mcp.response import env_action

@@ -30,7 +30,6 @@ def test_example_agent_plays_and_records(example, key, tmp_path, monkeypatch):
     module = load_example(example)
     model = ScriptedModel(SCRIPT)
     run_dir = tmp_path / "run"
-    base = None
     with FakeLLMServer(model) as server:
         base = server.url + ("" if example == "claude_agent" else "/v1")
         rc = module.main(["--model", "scripted", "--base-url", base, "--tasks", "demo-hello",
