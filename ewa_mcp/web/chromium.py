@@ -19,6 +19,8 @@ from typing import Any, Literal
 
 import anyio
 
+from .pool import ContextPool
+
 # Without the background-networking flags Chromium keeps trying to reach Google services,
 # which floods a closed network with failing requests and slows start-up.
 PLATFORM_FLAGS: tuple[str, ...] = (
@@ -153,6 +155,7 @@ class BrowserService:
         self._browser: Any = None
         self._lock = anyio.Lock()
         self._closed = False
+        self.pool = ContextPool()  # warm contexts handed from one episode to the next (pool.py)
 
     async def browser(self) -> Any:
         """A connected Browser, launching (or relaunching) Chromium when needed."""
@@ -205,6 +208,7 @@ class BrowserService:
 
     async def aclose(self) -> None:
         self._closed = True
+        await self.pool.aclose()
         browser, self._browser = self._browser, None
         driver, self._playwright = self._playwright, None
         if browser is not None:

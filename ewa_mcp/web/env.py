@@ -28,6 +28,7 @@ from .chromium import BrowserService, ChromiumNotFoundError, chromium_service
 from .config import BrowserConfig
 from .elements import ElementRefError, ElementRegistry, IdRef, parse_element, resolve_role_name
 from .observation import PAGE_INFO_JS, TabLine, build_observation
+from .pool import WarmContext
 from .render import EDITABLE_ROLES, render_tree
 from .safety import BlockedUrlError, UrlPolicy, normalize_origin
 from .settle import PAGE_HOOKS_JS, PageActivity
@@ -56,6 +57,8 @@ class BrowserEnvironment(Environment):
         self.service: BrowserService | None = None
         self.policy: UrlPolicy | None = None
         self.context: Any = None
+        self._warm: WarmContext | None = None  # the pool's record of self.context
+        self._route: Any = None  # the URL pattern our request guard is routed on
         self.tabs: list[Tab] = []
         self.active = 0
         self.history: list[str] = []
@@ -99,18 +102,50 @@ class BrowserEnvironment(Environment):
             url = self.policy.resolve(start)
         except BlockedUrlError as exc:
             raise EnvError(f"task {task.id}: start_url {start!r} is refused: {exc}") from exc
-        await self._new_context()
+        await self._new_context(warm=True)
         tab = await self._open_tab()
         await self._goto(tab, url)
 
     async def close(self) -> None:
         self._closed = True
         context, self.context = self.context, None
-        if context is not None:
+        warm, self._warm = self._warm, None
+        tabs, self.tabs = self.tabs, []  # a kept page serves the next episode: this one lets go of it
+        self.elements = ElementRegistry()
+        if context is None:
+            return
+        keep = self._page_to_keep(tabs)
+        if (warm is not None and keep is not None and self.service is not None and not self._context_closed
+                and self.service.is_alive() and self._launch_seen == self.service.launches):
             try:
-                await context.close()
+                await self._detach(context, tabs)
             except Exception:
-                pass  # the browser is already gone
+                pass  # a context we cannot detach from is closed below
+            else:
+                warm.watch(keep.page)
+                if warm.cdp is None:
+                    warm.cdp = keep.cdp
+                # Every origin the pages could have stored something for (the route refuses all others).
+                await self.service.pool.give_back(warm, self.policy.allowed_origins if self.policy else ())
+                return  # kept, or closed by the pool
+        try:
+            await context.close()
+        except Exception:
+            pass  # the browser is already gone
+
+    def _page_to_keep(self, tabs: list[Tab]) -> Tab | None:
+        """The tab whose page (and warm renderer) the next episode can use: the current one if it is fine."""
+        ordered = ([tabs[self.active]] if 0 <= self.active < len(tabs) else []) + tabs
+        return next((t for t in ordered if not (t.crashed or t.closed or t.page.is_closed())), None)
+
+    async def _detach(self, context: Any, tabs: list[Tab]) -> None:
+        """Remove everything this episode attached to the context, so that the next one starts bare."""
+        for tab in tabs:
+            tab.detach()
+        context.remove_listener("page", self._on_page)
+        context.remove_listener("close", self._on_context_close)
+        if self._route is not None:
+            await context.unroute(self._route, self._block_request)
 
     async def observe(self) -> Observation:
         await self._ensure_alive()
@@ -137,20 +172,29 @@ class BrowserEnvironment(Environment):
         }
 
     # ------------------------------------------------------------ browser plumbing
-    async def _new_context(self) -> None:
+    async def _new_context(self, warm: bool = False) -> None:
+        """A context for this episode: a warm one from the pool when ``warm`` and one is idle (see
+        pool.py), else a new one."""
         assert self.service is not None and self.policy is not None
         browser = await self.service.browser()
         self._launch_seen = self.service.launches
-        context = await browser.new_context(
-            viewport={"width": self.config.viewport_width, "height": self.config.viewport_height},
-            accept_downloads=False,
-            service_workers="block",  # a service worker could answer requests the route never sees
-        )
+        key = (self.config.viewport_width, self.config.viewport_height)
+        self._warm = await self.service.pool.take(key, self._launch_seen) if warm else None
+        if self._warm is not None:
+            context = self._warm.context
+        else:
+            context = await browser.new_context(
+                viewport={"width": self.config.viewport_width, "height": self.config.viewport_height},
+                accept_downloads=False,
+                service_workers="block",  # a service worker could answer requests the route never sees
+            )
+            await context.add_init_script(PAGE_HOOKS_JS)
+            self._warm = WarmContext(context, launch=self._launch_seen, key=key)
         await context.set_extra_http_headers({EPISODE_HEADER: self.episode.id})
         context.set_default_timeout(self.config.action_timeout_s * 1000)
         context.set_default_navigation_timeout(self.config.navigation_timeout_s * 1000)
-        await context.route(self.policy.route_pattern(), self._block_request)
-        await context.add_init_script(PAGE_HOOKS_JS)
+        self._route = self.policy.route_pattern()
+        await context.route(self._route, self._block_request)
         context.on("page", self._on_page)
         context.on("close", self._on_context_close)
         self.context = context
@@ -190,12 +234,12 @@ class BrowserEnvironment(Environment):
                 return tab
         tab = Tab(uid=self._next_tab_uid, page=page, activity=PageActivity(page), last_url=page.url)
         self._next_tab_uid += 1
-        page.on("framenavigated", lambda frame: self._on_navigated(tab, frame))
-        page.on("crash", lambda _page: setattr(tab, "crashed", True))
-        page.on("close", lambda _page: setattr(tab, "closed", True))
-        page.on("dialog", self._on_dialog)
-        page.on("download", self._on_download)
-        page.on("request", lambda request: self._on_request(tab, request))
+        tab.listen("framenavigated", lambda frame: self._on_navigated(tab, frame))
+        tab.listen("crash", lambda _page: setattr(tab, "crashed", True))
+        tab.listen("close", lambda _page: setattr(tab, "closed", True))
+        tab.listen("dialog", self._on_dialog)
+        tab.listen("download", self._on_download)
+        tab.listen("request", lambda request: self._on_request(tab, request))
         return tab
 
     def _on_page(self, page: Any) -> None:
@@ -248,12 +292,18 @@ class BrowserEnvironment(Environment):
                      "downloads are disabled and nothing was saved")
 
     async def _open_tab(self) -> Tab:
-        self._opening += 1
-        try:
-            page = await self.context.new_page()
-        finally:
-            self._opening -= 1
+        warm = self._warm
+        if not self.tabs and warm is not None and warm.page is not None and not warm.page.is_closed():
+            page = warm.page  # a warm context's kept page: blank, with its history cleared
+        else:
+            self._opening += 1
+            try:
+                page = await self.context.new_page()
+            finally:
+                self._opening -= 1
         tab = self._track(page)
+        if warm is not None and page is warm.page:
+            tab.cdp = warm.cdp
         tab.blank_start = True
         if tab not in self.tabs:
             self.tabs.append(tab)

@@ -90,10 +90,14 @@ class PageActivity:
         self.navigations = 0  # main-frame navigations committed so far
         self._inflight: dict[Any, int] = {}  # navigation request -> seq
         self._changed = asyncio.Event()
-        page.on("request", self._on_request)
-        page.on("requestfinished", self._on_done)
-        page.on("requestfailed", self._on_done)
-        page.on("framenavigated", self._on_navigated)
+        self._handlers = {"request": self._on_request, "requestfinished": self._on_done,
+                          "requestfailed": self._on_done, "framenavigated": self._on_navigated}
+        for event, handler in self._handlers.items():
+            page.on(event, handler)
+
+    def detach(self) -> None:
+        for event, handler in self._handlers.items():
+            self.page.remove_listener(event, handler)
 
     def _on_request(self, request: Any) -> None:
         try:

@@ -28,6 +28,18 @@ class Tab:
     # going back never lands on that blank entry.
     blank_start: bool = False
     cdp: Any = None  # a CDP session (history reset, screenshots), made on first use
+    listeners: list[tuple[str, Any]] = field(default_factory=list)  # our page listeners, removed by detach()
+
+    def listen(self, event: str, handler: Any) -> None:
+        self.page.on(event, handler)
+        self.listeners.append((event, handler))
+
+    def detach(self) -> None:
+        """Stop hearing this page's events: the page outlives the episode when it is kept warm."""
+        for event, handler in self.listeners:
+            self.page.remove_listener(event, handler)
+        self.listeners.clear()
+        self.activity.detach()
 
 
 def first_line(exc: BaseException) -> str:
