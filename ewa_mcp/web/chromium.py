@@ -32,6 +32,13 @@ PLATFORM_FLAGS: tuple[str, ...] = (
     "--disable-sync",
 )
 
+# Debian's package "chromium-headless-shell": the headless-only build (what Playwright itself runs
+# headless). It loads and snapshots the sites' pages ~35 % faster than the full browser in
+# headless mode (benchmarks/bench_browser.py), so headless runs prefer it where it is installed.
+HEADLESS_SHELL_CANDIDATES: tuple[str, ...] = (
+    "/usr/bin/chromium-headless-shell",
+)
+
 SYSTEM_CANDIDATES: tuple[str, ...] = (
     "/usr/bin/chromium",
     "/usr/bin/chromium-browser",
@@ -107,8 +114,11 @@ def playwright_bundled_chromium() -> Path | None:
     return None
 
 
-def find_chromium(explicit: str | None = None) -> ChromiumInfo:
-    """The Chromium to launch; raises ChromiumNotFoundError naming the fix when there is none."""
+def find_chromium(explicit: str | None = None, headless: bool = True) -> ChromiumInfo:
+    """The Chromium to launch; raises ChromiumNotFoundError naming the fix when there is none.
+
+    Order: an explicit path, Playwright's bundled build, (headless only) Debian's headless
+    shell, then a system Chromium or Chrome."""
     explicit = explicit or os.environ.get("EWA_CHROMIUM") or None
     if explicit:
         path = Path(explicit)
@@ -121,7 +131,7 @@ def find_chromium(explicit: str | None = None) -> ChromiumInfo:
     bundled = playwright_bundled_chromium()
     if bundled is not None:
         return ChromiumInfo(str(bundled), "playwright")
-    for candidate in SYSTEM_CANDIDATES:
+    for candidate in (HEADLESS_SHELL_CANDIDATES if headless else ()) + SYSTEM_CANDIDATES:
         if os.path.isfile(candidate) and os.access(candidate, os.X_OK):
             return ChromiumInfo(candidate, "system")
     for name in ("chromium", "chromium-browser", "google-chrome"):
@@ -235,7 +245,8 @@ async def chromium_service(services: Any) -> BrowserService:
 
     config = services.config.get("browser") or {}
     direct = [urlsplit(normalize_origin(origin)).hostname or "" for origin in config.get("allow_origins", [])]
-    service = BrowserService(find_chromium(config.get("executable_path")), headless=config.get("headless", True),
+    headless = config.get("headless", True)
+    service = BrowserService(find_chromium(config.get("executable_path"), headless), headless=headless,
                              direct_hosts=[h for h in direct if h])
     await service.browser()
     return service

@@ -214,9 +214,25 @@ def test_find_chromium_without_any_browser_says_how_to_install(monkeypatch, tmp_
     monkeypatch.delenv("EWA_CHROMIUM", raising=False)
     monkeypatch.setenv("PLAYWRIGHT_BROWSERS_PATH", str(tmp_path))
     monkeypatch.setattr(chromium, "SYSTEM_CANDIDATES", (str(tmp_path / "none"),))
+    monkeypatch.setattr(chromium, "HEADLESS_SHELL_CANDIDATES", (str(tmp_path / "no-shell"),))
     monkeypatch.setattr(chromium.shutil, "which", lambda name: None)
     with pytest.raises(chromium.ChromiumNotFoundError, match="apt-get install chromium"):
         chromium.find_chromium()
+
+
+def test_find_chromium_prefers_the_headless_shell_only_when_headless(monkeypatch, tmp_path):
+    monkeypatch.delenv("EWA_CHROMIUM", raising=False)
+    monkeypatch.setenv("PLAYWRIGHT_BROWSERS_PATH", str(tmp_path))  # no bundled build there
+    shell, full = tmp_path / "chromium-headless-shell", tmp_path / "chromium"
+    for exe in (shell, full):
+        exe.write_text("#!/bin/sh\n")
+        exe.chmod(0o755)
+    monkeypatch.setattr(chromium, "HEADLESS_SHELL_CANDIDATES", (str(shell),))
+    monkeypatch.setattr(chromium, "SYSTEM_CANDIDATES", (str(full),))
+    assert chromium.find_chromium(headless=True).path == str(shell)
+    assert chromium.find_chromium(headless=False).path == str(full)  # the shell cannot open a window
+    shell.unlink()
+    assert chromium.find_chromium(headless=True).path == str(full)
 
 
 def test_find_chromium_prefers_playwright_bundled_build(monkeypatch, tmp_path):
