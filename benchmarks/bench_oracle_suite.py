@@ -42,9 +42,10 @@ def main() -> None:
     graded = time.monotonic() - t1
     by_domain: dict[str, dict[str, int]] = {}
     for e in report.episodes:
-        d = by_domain.setdefault(e.domain, {"episodes": 0, "overall_success": 0})
+        d = by_domain.setdefault(e.domain, {"episodes": 0, "overall_success": 0, "episode_seconds": 0.0})
         d["episodes"] += 1
         d["overall_success"] += bool(e.overall_success)
+        d["episode_seconds"] += e.wall_time_s or 0.0
     failures = [{"task": e.task_id, "problems": e.problems[:2],
                  "unmet": [c.description for c in e.conditions if c.met is False][:3]}
                 for e in report.episodes if not e.overall_success]
@@ -54,7 +55,10 @@ def main() -> None:
         "play_seconds": round(played, 1), "grade_seconds": round(graded, 1),
         "episodes_per_minute": round(len(tasks) / played * 60, 1),
         "could_not_play": [o.task_id for o in summary.outcomes if o.failure][:20],
-        "by_domain": {d: {**v, "accuracy": round(v["overall_success"] / v["episodes"], 4)}
+        # mean_episode_seconds: one episode's own wall time, with the other worker's episode beside it.
+        "by_domain": {d: {"episodes": v["episodes"], "overall_success": v["overall_success"],
+                          "accuracy": round(v["overall_success"] / v["episodes"], 4),
+                          "mean_episode_seconds": round(v["episode_seconds"] / v["episodes"], 3)}
                       for d, v in sorted(by_domain.items())},
         "failures": failures[:20],
         "target": {"minutes": 20, "met": played <= 1200},
