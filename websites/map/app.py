@@ -24,6 +24,10 @@ from .places import Resolution, WorldAdapter
 from .svgmap import Marker, render_map_svg
 
 SITE_DIR = Path(__file__).resolve().parent
+# Pages benchmarks/bench_websites.py times: search, a short route, and a long cross-town one
+# (the SVG map is what makes directions pages the site's slowest).
+BENCH_URLS = ["/", "/search?q=museum", "/directions?from=Empire+State+Building&to=Times+Square",
+              "/directions?from=Intrepid+Museum&to=Stuyvesant+Square"]
 MAX_QUERY_CHARS = 200
 SEARCH_LIMIT = 10
 START_COLOR, END_COLOR, PLACE_COLOR = "#1f8a3b", "#c62828", "#c62828"

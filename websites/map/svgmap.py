@@ -10,7 +10,7 @@ city stays a few hundred kilobytes at most.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from xml.sax.saxutils import escape
 
 METRES_PER_DEGREE = 111_320.0
@@ -22,6 +22,12 @@ class Segment:
     a: LatLng
     b: LatLng
     street: str = ""
+    # (south, north, west, east), computed once: maps filter a city's ~10,000 segments per page.
+    box: tuple[float, float, float, float] = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        box = (min(self.a[0], self.b[0]), max(self.a[0], self.b[0]), min(self.a[1], self.b[1]), max(self.a[1], self.b[1]))
+        object.__setattr__(self, "box", box)
 
 
 @dataclass(frozen=True)
@@ -68,11 +74,9 @@ class Viewport:
         return self.south <= p[0] <= self.north and self.west <= p[1] <= self.east
 
     def touches(self, seg: Segment) -> bool:
-        if self.contains(seg.a) or self.contains(seg.b):
-            return True
-        # Both ends outside: keep it only if its bounding box overlaps (a long avenue block crossing the view).
-        return not (max(seg.a[0], seg.b[0]) < self.south or min(seg.a[0], seg.b[0]) > self.north
-                    or max(seg.a[1], seg.b[1]) < self.west or min(seg.a[1], seg.b[1]) > self.east)
+        # Its bounding box overlaps the view: an end inside, or a long avenue block crossing it.
+        south, north, west, east = seg.box
+        return not (north < self.south or south > self.north or east < self.west or west > self.east)
 
     @property
     def centre(self) -> LatLng:
@@ -96,6 +100,14 @@ class Projection:
         x = (p[1] - self.view.west) * METRES_PER_DEGREE * self.cos_lat * self.scale
         y = (self.view.north - p[0]) * METRES_PER_DEGREE * self.scale
         return round(x, 1), round(y, 1)
+
+    def many(self, points: list[LatLng]) -> list[tuple[float, float]]:
+        """``[self(p) for p in points]`` without a call per point: a long route's map projects
+        ~10,000 street ends, and the per-call overhead was most of the page's time."""
+        west, north = self.view.west, self.view.north
+        fx = METRES_PER_DEGREE * self.cos_lat * self.scale
+        fy = METRES_PER_DEGREE * self.scale
+        return [(round((lng - west) * fx, 1), round((north - lat) * fy, 1)) for lat, lng in points]
 
 
 def _scale_bar(proj: Projection) -> str:
@@ -134,9 +146,15 @@ def render_map_svg(
     view = Viewport.around(points, margin_m, aspect=width / max_height)
     proj = Projection(view, width, max_height)
     centre = view.centre
-    visible = [s for s in streets if view.touches(s)]
-    visible.sort(key=lambda s: abs(s.a[0] + s.b[0] - 2 * centre[0]) + abs(s.a[1] + s.b[1] - 2 * centre[1]))
-    visible = visible[:max_segments]
+    south, north, west, east = view.south, view.north, view.west, view.east
+    visible = [s for s in streets  # view.touches(s), inlined: this runs over every segment of the city
+               if not (s.box[1] < south or s.box[0] > north or s.box[3] < west or s.box[2] > east)]
+    # Nearest the centre first (the order also decides where street labels go), at most max_segments.
+    lat2, lng2 = 2 * centre[0], 2 * centre[1]
+    keys = [abs(s.a[0] + s.b[0] - lat2) + abs(s.a[1] + s.b[1] - lng2) for s in visible]
+    visible = [visible[i] for i in sorted(range(len(visible)), key=keys.__getitem__)[:max_segments]]
+    ends = proj.many([p for s in visible for p in (s.a, s.b)])  # projected once, for the path and the labels
+    projected = list(zip(ends[0::2], ends[1::2]))
 
     parts = [
         f'<svg xmlns="http://www.w3.org/2000/svg" role="img" aria-labelledby="map-title" '
@@ -151,7 +169,7 @@ def render_map_svg(
         f'<rect width="{proj.width}" height="{proj.height}" fill="#f2efe9"/>',
     ]
     if visible:
-        d = " ".join("M{} {}L{} {}".format(*proj(s.a), *proj(s.b)) for s in visible)
+        d = " ".join(f"M{a[0]} {a[1]}L{b[0]} {b[1]}" for a, b in projected)
         parts.append(f'<path class="streets" d="{d}" stroke="#ffffff" stroke-width="7" stroke-linecap="round" '
                      f'fill="none"/>')
     if len(route) >= 2:
@@ -159,7 +177,7 @@ def render_map_svg(
         parts.append(f'<path class="route" d="{d}" stroke="#1a66d6" stroke-width="5" stroke-linejoin="round" '
                      f'stroke-linecap="round" fill="none" opacity="0.85"/>')
     # Labels over the route line (with a halo) so the route's own street names stay readable.
-    parts.extend(_street_labels(visible, proj, view, max_labels, label_first or []))
+    parts.extend(_street_labels(visible, projected, view, max_labels, label_first or []))
     for marker in markers:
         x, y = proj(marker.at)
         parts.append(f'<g class="marker"><title>{escape(marker.name)}</title>'
@@ -172,15 +190,15 @@ def render_map_svg(
     return "".join(parts)
 
 
-def _street_labels(segments: list[Segment], proj: Projection, view: Viewport, limit: int,
-                   first: list[str]) -> list[str]:
+def _street_labels(segments: list[Segment], projected: list[tuple[tuple[float, float], tuple[float, float]]],
+                   view: Viewport, limit: int, first: list[str]) -> list[str]:
     """Label each street once, at the middle of its visible stretch; the streets in ``first``
     (the route's) before the others, then the longest. Blocks are short, so a label may run
     past its own segment along the street."""
     by_street: dict[str, list[tuple[tuple[float, float], tuple[float, float]]]] = {}
-    for seg in segments:
+    for seg, ends in zip(segments, projected):
         if seg.street and view.contains(seg.a) and view.contains(seg.b):
-            by_street.setdefault(seg.street, []).append((proj(seg.a), proj(seg.b)))
+            by_street.setdefault(seg.street, []).append(ends)
     lengths = {street: sum(math.dist(a, b) for a, b in segs) for street, segs in by_street.items()}
     order = [s for s in dict.fromkeys(first) if s in by_street]
     order += sorted((s for s in by_street if s not in order), key=lambda s: -lengths[s])
