@@ -50,7 +50,7 @@ class WarmContext:
         if self.page is not None:  # the scrub closes the page kept before: that is no breakage
             self.page.remove_listener("crash", self._broke)
             self.page.remove_listener("close", self._broke)
-        self.page, self.cdp = page, None
+        self.page, self.cdp, self.broken = page, None, False  # what happened to the old page no longer matters
         page.on("crash", self._broke)
         page.on("close", self._broke)
 

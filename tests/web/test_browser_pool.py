@@ -49,9 +49,14 @@ async def test_next_episode_gets_the_warm_page_with_nothing_of_the_last(web_serv
     assert a.history == a_history  # a no longer hears the page it handed on
     state = await b.final_state()
     assert state["site_history"] == ["fixture:/counter", "fixture:/item/3"]
-    await b.new_tab("fixture:/item/4")  # now the page to hand on is another tab's
+    await b.new_tab("fixture:/item/4")
+    await b.tab_focus(0)
+    await b.close_tab()  # closes the warm page itself: the page to hand on is now the other tab's
     await b.close()
     assert pool.idle() == 1 and b.context is None and not b.tabs
+    c = await open_env(web_services, "fixture:/item/5", episode_id="ep-pool-b2")
+    assert pool.reused == reused + 2 and [t["site_url"] for t in (await c.observe()).data["tabs"]] == ["fixture:/item/5"]
+    await c.close()
 
 
 async def test_blocked_requests_are_refused_by_the_new_episode_only(web_services):
