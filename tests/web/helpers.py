@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import asyncio
+import contextlib
 from types import SimpleNamespace
 from typing import Any
 
@@ -34,3 +36,16 @@ def element_id(observation: Any, role: str, name: str) -> int:
         if needle in stripped and stripped.startswith("["):
             return int(stripped[1 : stripped.index("]")])
     raise AssertionError(f"{role} '{name}' not in observation:\n{observation.text}")
+
+
+async def crash_tab(env: Any, tab: Any) -> None:
+    """Kill the renderer of ``tab`` and wait (bounded) until the environment has noticed."""
+    session = await env.context.new_cdp_session(tab.page)
+    crash = asyncio.ensure_future(session.send("Page.crash"))  # never answered: the renderer dies
+    for _ in range(500):
+        if tab.crashed:
+            break
+        await asyncio.sleep(0.01)
+    crash.cancel()
+    with contextlib.suppress(BaseException):
+        await crash

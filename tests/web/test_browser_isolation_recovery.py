@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import asyncio
-import contextlib
 import os
 import re
 import signal
@@ -12,7 +11,7 @@ import pytest
 
 from ewa_mcp.environment import EnvError
 
-from .helpers import element_id, open_env
+from .helpers import crash_tab, element_id, open_env
 
 pytestmark = [pytest.mark.anyio, pytest.mark.browser]
 
@@ -88,15 +87,7 @@ async def test_closed_browser_is_relaunched_on_next_action(web_services):
 async def test_crashed_tab_is_reloaded(web_services):
     env = await open_env(web_services, "fixture:/item/3")
     tab = env.tabs[0]
-    session = await env.context.new_cdp_session(tab.page)
-    crash = asyncio.ensure_future(session.send("Page.crash"))  # never answered: the renderer dies
-    for _ in range(500):
-        if tab.crashed:
-            break
-        await asyncio.sleep(0.01)
-    crash.cancel()
-    with contextlib.suppress(BaseException):
-        await crash
+    await crash_tab(env, tab)
     assert tab.crashed
     obs = await env.observe()
     assert obs.data["site_url"] == "fixture:/item/3" and obs.data["title"] == "Apple Crumble"

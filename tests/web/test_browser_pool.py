@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import asyncio
-import contextlib
 from types import SimpleNamespace
 
 import pytest
@@ -11,7 +9,7 @@ import pytest
 from ewa_mcp.environment import EnvError
 from ewa_mcp.web.pool import ContextPool, WarmContext
 
-from .helpers import open_env
+from .helpers import crash_tab, open_env
 
 pytestmark = [pytest.mark.anyio, pytest.mark.browser]
 
@@ -75,15 +73,7 @@ async def test_a_context_whose_page_crashed_is_not_handed_on(web_services):
     pool = await _pool(web_services)
     env = await open_env(web_services, "fixture:/item/3", episode_id="ep-pool-e")
     tab = env.tabs[0]
-    session = await env.context.new_cdp_session(tab.page)
-    crash = asyncio.ensure_future(session.send("Page.crash"))  # never answered: the renderer dies
-    for _ in range(500):
-        if tab.crashed:
-            break
-        await asyncio.sleep(0.01)
-    crash.cancel()
-    with contextlib.suppress(BaseException):
-        await crash
+    await crash_tab(env, tab)
     await env.close()
     assert pool.idle() == 0
     reused = pool.reused
