@@ -73,11 +73,6 @@ class Viewport:
     def contains(self, p: LatLng) -> bool:
         return self.south <= p[0] <= self.north and self.west <= p[1] <= self.east
 
-    def touches(self, seg: Segment) -> bool:
-        # Its bounding box overlaps the view: an end inside, or a long avenue block crossing it.
-        south, north, west, east = seg.box
-        return not (north < self.south or south > self.north or east < self.west or west > self.east)
-
     @property
     def centre(self) -> LatLng:
         return ((self.south + self.north) / 2, (self.west + self.east) / 2)
@@ -147,7 +142,9 @@ def render_map_svg(
     proj = Projection(view, width, max_height)
     centre = view.centre
     south, north, west, east = view.south, view.north, view.west, view.east
-    visible = [s for s in streets  # view.touches(s), inlined: this runs over every segment of the city
+    # Segments whose box overlaps the view (an end inside, or a long avenue block crossing it);
+    # inline comparisons, as this runs over every segment of the city.
+    visible = [s for s in streets
                if not (s.box[1] < south or s.box[0] > north or s.box[3] < west or s.box[2] > east)]
     # Nearest the centre first (the order also decides where street labels go), at most max_segments.
     lat2, lng2 = 2 * centre[0], 2 * centre[1]
