@@ -117,7 +117,7 @@ def cmd_eval(args: argparse.Namespace) -> int:
         patterns = args.tasks
         if args.agent == "replay" and not patterns:
             patterns = sorted(agent.calls)  # a replay runs the tasks it has calls for
-        tasks = select_tasks(TaskStore(task_dirs), patterns, args.sample, args.domain)
+        tasks = select_tasks(TaskStore(task_dirs), patterns, args.sample, args.domain, args.difficulty)
     except (EvalError, ReplayError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
@@ -188,6 +188,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("replay", nargs="?", metavar="FILE", help="replay: a JSONL of tool calls or a run directory")
     p.add_argument("--tasks", action="append", metavar="GLOB", help="task id glob (repeatable)")
     p.add_argument("--domain", action="append", help="restrict to a domain (repeatable)")
+    p.add_argument("--difficulty", action="append", choices=["easy", "medium", "hard"],
+                   help="restrict to a difficulty (repeatable)")
     p.add_argument("--sample", type=int, metavar="N", help="N tasks per domain, chosen deterministically")
     p.add_argument("--workers", type=int, default=1)
     p.add_argument("--transport", choices=["inprocess", "stdio", "http"], default="inprocess")

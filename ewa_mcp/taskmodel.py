@@ -15,6 +15,8 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 SCHEMA_VERSION = 1
 
 Domain = Literal["cooking", "navigation", "shopping", "traveling", "geolocation", "demo"]
+Difficulty = Literal["easy", "medium", "hard"]
+DIFFICULTIES: tuple[str, ...] = ("easy", "medium", "hard")
 EnvKind = Literal["web", "embodied"]
 
 
@@ -161,6 +163,8 @@ class Task(_Strict):
     schema_version: int = SCHEMA_VERSION
     id: str = Field(pattern=r"^[a-z0-9][a-z0-9_.\-]*$")
     domain: Domain
+    # How hard the task is within its domain; every generator sets it (docs/task.schema.json).
+    difficulty: Difficulty = "medium"
     intent: str
     start: StartState = Field(default_factory=StartState)
     web_goals: list[WebGoal] = Field(default_factory=list)

@@ -163,6 +163,8 @@ def example_parser(description: str, default_model: str):
     p.add_argument("--base-url", default=None, help="API base URL (a proxy, a compatible server, a test fixture)")
     p.add_argument("--tasks", action="append", metavar="GLOB", help="task id glob (repeatable)")
     p.add_argument("--domain", action="append")
+    p.add_argument("--difficulty", action="append", choices=["easy", "medium", "hard"],
+                   help="restrict to a difficulty (repeatable)")
     p.add_argument("--sample", type=int, metavar="N", help="N tasks per domain")
     p.add_argument("--transport", choices=["inprocess", "stdio", "http"], default="stdio")
     p.add_argument("--workers", type=int, default=1)
@@ -183,7 +185,7 @@ def run_example(args: Any, agent: LLMAgent) -> int:
 
     task_dirs = task_dirs_from(args.tasks_dir)
     try:
-        tasks = select_tasks(TaskStore(task_dirs), args.tasks, args.sample, args.domain)
+        tasks = select_tasks(TaskStore(task_dirs), args.tasks, args.sample, args.domain, args.difficulty)
     except EvalError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2

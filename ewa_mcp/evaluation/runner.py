@@ -25,16 +25,18 @@ class EvalError(ValueError):
 
 
 def select_tasks(store: TaskStore, patterns: list[str] | None, sample: int | None,
-                 domains: list[str] | None = None) -> list[Task]:
+                 domains: list[str] | None = None, difficulties: list[str] | None = None) -> list[Task]:
     tasks = sorted(store.all(), key=lambda t: t.id)
     if domains:
         tasks = [t for t in tasks if t.domain in domains]
+    if difficulties:
+        tasks = [t for t in tasks if t.difficulty in difficulties]
     if patterns:
         tasks = [t for t in tasks if any(fnmatch.fnmatchcase(t.id, p) for p in patterns)]
         if not tasks:
             raise EvalError(f"no task id matches {patterns}; see `ewa-mcp tasks list` for the ids")
     if not tasks:
-        raise EvalError("no tasks to run; check --tasks-dir / --domain")
+        raise EvalError("no tasks to run; check --tasks-dir / --domain / --difficulty")
     if sample:
         # N per domain, evenly spaced over the sorted ids: deterministic and spread across templates.
         by_domain: dict[str, list[Task]] = {}

@@ -21,6 +21,7 @@ EpisodeId = Annotated[str, Field(description="the id start_episode returned", mi
 class TaskSummary(BaseModel):
     id: str
     domain: str
+    difficulty: str
     intent: str
     step_limit: int
 
@@ -82,23 +83,27 @@ async def _observe(episode: Any) -> Observation:
 
 
 def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
-    @mcp.tool(description="List benchmark tasks, optionally of one domain, a page at a time.")
+    @mcp.tool(description="List benchmark tasks, optionally of one domain and difficulty (easy, medium, hard), a page at a time.")
     def list_tasks(
         domain: Literal["cooking", "navigation", "shopping", "traveling", "geolocation", "demo"] | None = None,
+        difficulty: Literal["easy", "medium", "hard"] | None = None,
         limit: Annotated[int, Field(ge=1, le=500)] = 20,
         offset: Annotated[int, Field(ge=0)] = 0,
     ) -> Annotated[CallToolResult, TaskList]:
         tasks = sorted(episodes.tasks.all(domain), key=lambda t: t.id)
+        if difficulty is not None:
+            tasks = [t for t in tasks if t.difficulty == difficulty]
         page = tasks[offset : offset + limit]
         nxt = offset + limit if offset + limit < len(tasks) else None
         out = TaskList(
-            tasks=[TaskSummary(id=t.id, domain=t.domain, intent=t.intent, step_limit=t.step_limit) for t in page],
+            tasks=[TaskSummary(id=t.id, domain=t.domain, difficulty=t.difficulty, intent=t.intent,
+                               step_limit=t.step_limit) for t in page],
             total=len(tasks),
             offset=offset,
             next_offset=nxt,
         )
         lines = [f"{len(tasks)} tasks" + (f" in {domain}" if domain else "") + f"; showing {offset}–{offset + len(page)}:"]
-        lines += [f"- {t.id} [{t.domain}] {t.intent}" for t in page]
+        lines += [f"- {t.id} [{t.domain}, {t.difficulty}] {t.intent}" for t in page]
         if nxt is not None:
             lines.append(f"(more: offset={nxt})")
         return tool_result(out, "\n".join(lines))
