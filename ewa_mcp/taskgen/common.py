@@ -36,3 +36,8 @@ def site_url(site: str, path: str, **query: Any) -> str:
 def step_limit_for(oracle_len: int, slack: int = 15) -> int:
     """Room for an agent that is less direct than the oracle, but not unbounded."""
     return max(30, 2 * oracle_len + slack)
+
+
+# How a walk ends, said the same way by every intent that involves one (docs/grading.md, "Stop and finish").
+# The walk ends at the first street_stop, or else when the episode finishes; where the agent stands then is graded.
+WALK_RULE = "Your walk ends where you call street_stop (or finish_episode); be at the destination then."
