@@ -26,10 +26,32 @@ from .taskmodel import SCHEMA_VERSION, Task, TaskStore
 
 EnvKind = Literal["web", "embodied"]
 Status = Literal["running", "finished", "step_limit", "aborted"]
+END_REASONS: dict[str, str] = {"finished": "the agent finished the episode"}
+ARG_LIMIT = 2000  # characters of one argument kept in the trajectory line of a refused call
 
 
 class EpisodeError(ToolError):
     """A problem with the episode itself (unknown, finished, wrong environment)."""
+
+
+QUOTE_LIMIT = 200  # an error quotes at most this many characters of a value the caller sent
+
+
+def quote(value: Any, limit: int = QUOTE_LIMIT) -> str:
+    """repr() of a caller's value, cut to ``limit`` characters so a huge argument is never echoed whole."""
+    text = repr(value)
+    if len(text) <= limit:
+        return text
+    return f"{text[:limit]}… ({len(text)} characters)"
+
+
+# The tools that act in each environment, named in the refusal a tool of another domain gets.
+TOOLS_OF: dict[str, str] = {
+    "browser": "browser_* tools",
+    "kitchen": "kitchen_* tools",
+    "street": "street_* tools",
+    "geo": "geo_look, geo_move and submit_location",
+}
 
 
 @dataclass
@@ -39,6 +61,9 @@ class Episode:
     recorder: EpisodeRecorder
     options: dict[str, Any]
     environments: dict[EnvKind, Environment] = field(default_factory=dict)
+    # kind -> the registry name it was created from ("browser", "kitchen", "street", "geo"):
+    # what a tool checks before it acts (a kitchen tool refuses a street episode).
+    environment_names: dict[EnvKind, str] = field(default_factory=dict)
     active: EnvKind = "web"
     status: Status = "running"
     end_reason: str | None = None
@@ -80,8 +105,31 @@ class Episode:
             "step_limit": self.task.step_limit,
             "steps_left": self.steps_left,
             "switches": self.switches,
+            "walk_stopped": self.walk_stopped(),
             "answer": self.answer,
         }
+
+    def walk_stopped(self) -> bool | None:
+        """Whether the episode's walk was ended with street_stop; None when it has no walk."""
+        env = self.environments.get("embodied")
+        if self.environment_names.get("embodied") != "street" or env is None:
+            return None
+        return bool(getattr(env, "stopped", False))
+
+
+def bounded_args(args: dict[str, Any]) -> dict[str, Any]:
+    """The arguments of a refused call as the trajectory keeps them: strings cut to ARG_LIMIT characters,
+    anything that is not plain JSON shown by a bounded repr."""
+    out: dict[str, Any] = {}
+    for key, value in list(args.items())[:50]:
+        key = str(key)[:100]
+        if isinstance(value, str):
+            out[key] = value if len(value) <= ARG_LIMIT else value[:ARG_LIMIT] + f"… ({len(value)} characters)"
+        elif value is None or isinstance(value, bool | int | float):
+            out[key] = value
+        else:
+            out[key] = quote(value, ARG_LIMIT)
+    return out
 
 
 def environment_names_for(task: Task) -> dict[EnvKind, str]:
@@ -125,16 +173,18 @@ class EpisodeManager:
     async def start(self, task_id: str, options: dict[str, Any] | None = None) -> Episode:
         task = self.tasks.get(task_id)
         if task is None:
-            close = sorted(t.id for t in self.tasks.all() if task_id.split("-")[0] in t.id)[:5]
+            prefix = task_id[:40].split("-")[0]
+            close = sorted(t.id for t in self.tasks.all() if prefix and prefix in t.id)[:5]
             hint = f" Similar ids: {', '.join(close)}." if close else ""
-            raise EpisodeError(f"unknown task id {task_id!r}; call list_tasks to see the ids.{hint}")
+            raise EpisodeError(f"unknown task id {quote(task_id)}; call list_tasks to see the ids.{hint}")
         options = dict(options or {})
         needed = environment_names_for(task)
         classes = {kind: self.env_class(name) for kind, name in needed.items()}  # fail before creating anything
         episode_id = "ep-" + uuid.uuid4().hex[:12]
         recorder = EpisodeRecorder(self.run_dir / episode_id)
         recorder.write_task(task.model_dump(mode="json"))
-        episode = Episode(id=episode_id, task=task, recorder=recorder, options=options, active=task.start.environment)
+        episode = Episode(id=episode_id, task=task, recorder=recorder, options=options, active=task.start.environment,
+                          environment_names=dict(needed))
         try:
             for kind, cls in classes.items():
                 env = cls(episode, self.services)
@@ -154,7 +204,7 @@ class EpisodeManager:
     def get(self, episode_id: str) -> Episode:
         episode = self._episodes.get(episode_id)
         if episode is None:
-            raise EpisodeError(f"unknown episode id {episode_id!r}; start one with start_episode(task_id)")
+            raise EpisodeError(f"unknown episode id {quote(episode_id)}; start one with start_episode(task_id)")
         return episode
 
     def running(self, episode_id: str) -> Episode:
@@ -167,6 +217,18 @@ class EpisodeManager:
         return episode
 
     # ------------------------------------------------------------ acting
+    def _refuse_wrong_domain(self, episode: Episode, tool: str, requires: str) -> None:
+        """A tool made for one kind of environment refuses an episode that has none of that kind."""
+        if requires in episode.environment_names.values():
+            return
+        have = sorted(set(episode.environment_names.values()))
+        use = "; ".join(f"{name}: {TOOLS_OF.get(name, name)}" for name in have) or "none"
+        raise EpisodeError(
+            f"{tool} works only in episodes with a {requires} environment; episode {episode.id} "
+            f"(task {episode.task.id}, {episode.task.domain}) has {', '.join(have) or 'no environment'}. "
+            f"Use the tools of this episode's environments ({use}), and finish_episode to end it."
+        )
+
     async def act(
         self,
         episode_id: str,
@@ -175,9 +237,18 @@ class EpisodeManager:
         fn: Callable[[Episode], Awaitable[Observation]],
         *,
         environment: EnvKind | None,
+        requires: str | None = None,
         counted: bool = True,
+        ends: Status | None = None,
     ) -> tuple[Episode, Observation]:
-        """Run one tool call against an episode, enforcing the protocol and recording it."""
+        """Run one tool call against an episode, enforcing the protocol and recording it.
+
+        The step rule (docs/architecture.md): every call on a running episode is written to the
+        trajectory and, when ``counted`` (every agent call but start_episode), uses a step, whether
+        it succeeds or fails. ``requires`` names the environment the tool is made for; ``ends``
+        makes a successful call end the episode with that status before the lock is released,
+        so no call racing it is applied or recorded after it (an atomic finish).
+        """
         episode = self.running(episode_id)
         async with episode.lock:
             # Re-check under the lock: a concurrent call may have ended the episode.
@@ -186,6 +257,8 @@ class EpisodeManager:
             error: str | None = None
             observation: Observation | None = None
             try:
+                if requires is not None:
+                    self._refuse_wrong_domain(episode, tool, requires)
                 if environment is not None and environment != episode.active:
                     raise EpisodeError(
                         f"{tool} acts on the {environment} environment, but the active environment is "
@@ -201,23 +274,44 @@ class EpisodeManager:
                 error = f"internal error in {tool}: {type(exc).__name__}: {exc}"
                 raise ToolError(error) from exc
             finally:
-                episode.calls += 1
-                if counted:
-                    episode.steps += 1
-                episode.recorder.step(
-                    index=episode.calls,
-                    tool=tool,
-                    args=args,
-                    ok=error is None,
-                    error=error,
-                    duration_ms=(time.perf_counter() - started) * 1000,
-                    environment=episode.active,
-                    observation=observation.text if observation else (error or ""),
-                    counted=counted,
-                    images=episode.recorder.save_images(episode.calls, observation.images) if observation else None,
-                )
-                if counted and episode.status == "running" and episode.steps >= episode.task.step_limit:
+                self._record(episode, tool, args, started, error, observation, counted)
+                if ends is not None and error is None:
+                    await self._end(episode, ends, END_REASONS.get(ends, ends))
+                elif counted and episode.status == "running" and episode.steps >= episode.task.step_limit:
                     await self._end(episode, "step_limit", f"step limit of {episode.task.step_limit} reached")
+
+    def _record(self, episode: Episode, tool: str, args: dict[str, Any], started: float, error: str | None,
+                observation: Observation | None, counted: bool) -> None:
+        episode.calls += 1
+        if counted:
+            episode.steps += 1
+        episode.recorder.step(
+            index=episode.calls,
+            tool=tool,
+            args=args,
+            ok=error is None,
+            error=error,
+            duration_ms=(time.perf_counter() - started) * 1000,
+            environment=episode.active,
+            observation=observation.text if observation else (error or ""),
+            counted=counted,
+            images=episode.recorder.save_images(episode.calls, observation.images) if observation else None,
+        )
+
+    async def record_rejected(self, episode_id: Any, tool: str, args: dict[str, Any], error: str) -> None:
+        """A call the MCP layer refused before it reached ``act`` (its arguments failed validation, or the
+        tool does not exist) still uses a step of the episode it names, and is written to its trajectory."""
+        if not isinstance(episode_id, str):
+            return
+        episode = self._episodes.get(episode_id)
+        if episode is None or episode.status != "running":
+            return
+        async with episode.lock:
+            if episode.status != "running":
+                return
+            self._record(episode, tool, bounded_args(args), time.perf_counter(), error, None, True)
+            if episode.steps >= episode.task.step_limit:
+                await self._end(episode, "step_limit", f"step limit of {episode.task.step_limit} reached")
 
     async def switch(self, episode_id: str, target: EnvKind, message: str) -> tuple[Episode, Observation]:
         async def do(episode: Episode) -> Observation:
@@ -236,17 +330,22 @@ class EpisodeManager:
 
     async def finish(
         self, episode_id: str, answer: str | None = None, submission: dict[str, Any] | None = None,
-        tool: str = "finish_episode", args: dict[str, Any] | None = None,
+        tool: str = "finish_episode", args: dict[str, Any] | None = None, requires: str | None = None,
+        check: Callable[[Episode], None] | None = None,
     ) -> Episode:
+        """End the episode with the agent's answer (or geolocation submission), atomically: the call is
+        recorded and the episode ended under one hold of its lock. ``check`` may refuse the call (it is
+        then recorded as a failed step and the episode stays open)."""
+
         async def do(episode: Episode) -> Observation:
+            if check is not None:
+                check(episode)
             episode.answer = answer
             episode.submission = submission
-            return Observation(text=f"episode finished; answer: {answer!r}")
+            return Observation(text=f"episode finished; answer: {quote(answer, 400)}")
 
         episode, _ = await self.act(episode_id, tool, args if args is not None else {"answer": answer}, do,
-                                    environment=None, counted=False)
-        async with episode.lock:
-            await self._end(episode, "finished", "the agent finished the episode")
+                                    environment=None, requires=requires, ends="finished")
         return episode
 
     async def _end(self, episode: Episode, status: Status, reason: str) -> None:

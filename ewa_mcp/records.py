@@ -16,9 +16,74 @@ import threading
 import time
 from datetime import UTC, datetime
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 DIGEST_CHARS = 240
+
+
+# ---------------------------------------------------------------- the record formats
+# Written by EpisodeRecorder (the server) and validated by the graders: a line or file that does not fit
+# makes the episode an ``invalid_record`` failure instead of crashing the grading of a whole run.
+class _Record(BaseModel):
+    # Newer servers may add fields; a grader keeps reading what it knows.
+    model_config = ConfigDict(extra="allow")
+
+
+class TrajectoryLine(_Record):
+    """One line of trajectory.jsonl: one tool call on the episode."""
+
+    step: int = Field(ge=0)
+    tool: str
+    args: dict[str, Any] = Field(default_factory=dict)
+    ok: bool
+    error: str | None = None
+    counted: bool = True
+    environment: str | None = None
+    observation: str = ""
+    t: float | None = None
+    time: str | None = None
+    duration_ms: float | None = None
+    images: list[str] | None = None
+
+
+class FinalState(_Record):
+    """final_state.json, written once when the episode ends."""
+
+    schema_version: int | None = None
+    episode_id: str | None = None
+    task_id: str | None = None
+    domain: str | None = None
+    status: Literal["finished", "step_limit", "aborted"]
+    end_reason: str | None = None
+    answer: str | None = None
+    submission: dict[str, Any] | None = None
+    steps: int | None = Field(default=None, ge=0)
+    calls: int | None = Field(default=None, ge=0)
+    switches: int | None = Field(default=None, ge=0)
+    active_environment: str | None = None
+    options: dict[str, Any] = Field(default_factory=dict)
+    wall_time_s: float | None = None
+    environments: dict[str, dict[str, Any]] = Field(default_factory=dict)
+
+
+class WebEvent(_Record):
+    """One line of web_events.jsonl: something an embedded site saw the episode's browser do."""
+
+    type: str
+    site: str | None = None
+
+
+def record_problem(model: type[BaseModel], payload: Any, where: str) -> str | None:
+    """Why ``payload`` does not fit ``model`` (the first problem, bounded), or None when it fits."""
+    try:
+        model.model_validate(payload)
+    except ValidationError as exc:
+        first = exc.errors()[0]
+        loc = ".".join(str(p) for p in first["loc"]) or "<root>"
+        return f"{where}: {loc}: {first['msg']}"[:300]
+    return None
 
 
 def _now_iso() -> str:

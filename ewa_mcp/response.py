@@ -51,6 +51,15 @@ def step_result(episode: Any, observation: Observation, *, include_images: bool 
     return tool_result(model, text, observation.images if include_images else ())
 
 
+# Environment tools are named <prefix>_<action>; the prefix names the environment (its registry name)
+# the tool is made for, so a kitchen tool called on a street episode is refused before anything runs.
+TOOL_PREFIXES: dict[str, str] = {"browser": "browser", "kitchen": "kitchen", "street": "street", "geo": "geo"}
+
+
+def environment_for_tool(tool: str) -> str | None:
+    return TOOL_PREFIXES.get(tool.partition("_")[0])
+
+
 async def env_action(
     episodes: Any,
     episode_id: str,
@@ -58,13 +67,13 @@ async def env_action(
     args: dict[str, Any],
     environment: str,
     action: Callable[[Environment], Awaitable[Observation]],
-    *,
-    counted: bool = True,
 ) -> CallToolResult:
-    """Run ``action`` on the episode's ``environment`` (web/embodied) through the episode manager."""
+    """Run ``action`` on the episode's ``environment`` (web/embodied) through the episode manager.
+    Like every call on a running episode, it is recorded and uses one step."""
 
     async def run(episode: Any) -> Observation:
         return await action(episode.environment(environment))
 
-    episode, observation = await episodes.act(episode_id, tool, args, run, environment=environment, counted=counted)
+    episode, observation = await episodes.act(episode_id, tool, args, run, environment=environment,
+                                              requires=environment_for_tool(tool))
     return step_result(episode, observation)

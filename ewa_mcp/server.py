@@ -11,6 +11,8 @@ from pathlib import Path
 from typing import Any
 
 from mcp.server.mcpserver import MCPServer
+from mcp.server.mcpserver.exceptions import ToolError, UnexpectedToolError
+from pydantic import ValidationError
 
 from . import __version__, registry
 from .episodes import EpisodeManager
@@ -28,8 +30,28 @@ ewa-mcp: embodied web agent tasks. Protocol:
    Only the active one accepts actions; switch_environment(episode_id, target, message) changes it (it is a
    recorded action, say why in message).
 3. Pass episode_id to every tool. get_observation shows the active environment again without acting.
-4. finish_episode(episode_id, answer) ends the episode (geolocation uses submit_location). Steps are limited.
+4. finish_episode(episode_id, answer) ends the episode (geolocation uses submit_location). A walk ends at
+   your first street_stop, or else at finish_episode: where you stand then is graded.
+5. Every call on a running episode is recorded and uses one step, failed calls included; steps are limited.
 """
+
+
+class EpisodeServer(MCPServer):
+    """The SDK's server, plus one rule: a call the SDK refuses before the tool runs (arguments that fail
+    the input schema, an unknown tool name) is still a step of the episode it names, recorded with its
+    error like any failed call (docs/architecture.md, "The step rule")."""
+
+    episodes: EpisodeManager
+
+    async def call_tool(self, name: str, arguments: dict[str, Any], context: Any = None) -> Any:
+        try:
+            return await super().call_tool(name, arguments, context)
+        except ToolError as exc:
+            rejected_early = isinstance(exc.__cause__, ValidationError) or self._tool_manager.get_tool(name) is None
+            if rejected_early and not isinstance(exc, UnexpectedToolError) and isinstance(arguments, dict):
+                args = {k: v for k, v in arguments.items() if k != "episode_id"}
+                await self.episodes.record_rejected(arguments.get("episode_id"), name[:100], args, str(exc))
+            raise
 
 
 @dataclass
@@ -57,7 +79,8 @@ def build_server(config: ServerConfig | None = None) -> tuple[MCPServer, Episode
             await episodes.aclose()
             await services.aclose()
 
-    mcp = MCPServer("ewa-mcp", instructions=INSTRUCTIONS, version=__version__, lifespan=lifespan)
+    mcp = EpisodeServer("ewa-mcp", instructions=INSTRUCTIONS, version=__version__, lifespan=lifespan)
+    mcp.episodes = episodes
     for module_name in registry.TOOL_GROUPS:
         importlib.import_module(module_name).register(mcp, episodes)
     return mcp, episodes

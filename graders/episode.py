@@ -160,6 +160,8 @@ def grade_record(record: EpisodeRecord, radius_m: float | None = None) -> Episod
         answer_correct = all_met(answer_conditions) if answer_checked else None
         overall = all_met([ConditionResult(side="web", kind="part", description="", met=v)
                            for v in (web_success, embodied_success, *([answer_correct] if answer_checked else []))])
+        if record.invalid:
+            overall = False  # a record that breaks its own format proves nothing (docs/grading.md)
         completion = sum(1 for c in conditions if c.met is True) / len(conditions) if conditions else None
 
     trajectory = record.trajectory

@@ -17,6 +17,7 @@ from .trajectory import REPEAT_MIN, longest_repeat, page_loop, visits
 
 # key -> (group, label); the order is the priority order of the rules.
 CATEGORIES: dict[str, tuple[ErrorGroup, str]] = {
+    "invalid_record": ("other", "Invalid record"),
     "incomplete_record": ("other", "Incomplete record"),
     "web_page_loop": ("web_only", "Web page loop"),
     "web_repeated_actions": ("web_only", "Repeated identical web actions"),
@@ -88,7 +89,13 @@ def classify(record: EpisodeRecord, outcome: Outcome) -> ErrorClassification:
     embodied_failed = outcome.embodied_ok is False
     cross = outcome.has_web_env and outcome.has_embodied_env
 
-    if outcome.web_ok is None or outcome.embodied_ok is None or (outcome.answer_ok is None and task and task.answer):
+    if record.invalid:
+        matched["invalid_record"] = "; ".join(record.invalid[:2])
+    if record.unfinished:
+        matched["incomplete_record"] = "the episode never ended (no final_state.json): " + (
+            "; ".join(p for p in record.problems[:2]) or "the server or harness stopped mid-episode")
+    elif outcome.web_ok is None or outcome.embodied_ok is None or (
+            outcome.answer_ok is None and task and task.answer):
         matched["incomplete_record"] = "; ".join(record.problems[:2]) or "the outcome could not be decided"
 
     if trajectory:

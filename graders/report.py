@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 from .aggregate import domain_aggregate, error_breakdown
 from .episode import grade_episode
-from .models import RunReport
+from .models import EpisodeResult, ErrorClassification, RunReport
 from .rundir import EPISODE_FILES, episode_dirs
 
 DOMAIN_ORDER = ("navigation", "shopping", "traveling", "cooking", "geolocation")
@@ -38,7 +39,7 @@ def grade_run(run_dir: str | Path, radius_m: float | None = None, label: str | N
             if not (root / "task.json").exists() and not (root / "trajectory.jsonl").exists()
             else f"{root} is an episode directory; pass its parent (the run directory), or use grade_episode"
         )
-    episodes = [grade_episode(d, radius_m) for d in dirs]
+    episodes = [_grade_safely(d, radius_m) for d in dirs]
     domains = sorted({e.domain for e in episodes if e.domain != "demo"}, key=_domain_key)
     by_domain = {d: [e for e in episodes if e.domain == d] for d in domains}
     demo = [e for e in episodes if e.domain == "demo"]
@@ -57,3 +58,28 @@ def grade_run(run_dir: str | Path, radius_m: float | None = None, label: str | N
         episodes=episodes,
         problems=problems,
     )
+
+
+def _grade_safely(directory: Path, radius_m: float | None) -> EpisodeResult:
+    """One episode's grade; a record that trips the grader itself becomes an invalid_record failure of that
+    episode, listed with the reason, and the rest of the run is still graded."""
+    try:
+        return grade_episode(directory, radius_m)
+    except Exception as exc:  # the principle: graders never crash on a run
+        reason = f"the grader could not read this record ({type(exc).__name__}: {str(exc)[:200]})"
+        try:
+            task = json.loads((directory / "task.json").read_text(encoding="utf-8"))
+        except Exception:
+            task = None
+        task = task if isinstance(task, dict) else {}
+        task_id = task.get("id") if isinstance(task.get("id"), str) else None
+        domain = task.get("domain") if isinstance(task.get("domain"), str) else "unknown"
+        return EpisodeResult(
+            episode_id=directory.name, task_id=task_id, domain=domain, status="invalid", gradable=True,
+            has_web_goals=False, has_embodied_goals=False, answer_checked=False, web_success=None,
+            embodied_success=None, answer_correct=None, overall_success=False, completion=0.0, conditions_met=0,
+            conditions_total=0, conditions=[], steps=0, calls=0, switches=0, wall_time_s=None,
+            error=ErrorClassification(category="invalid_record", group="other", matched=["invalid_record"],
+                                      evidence={"invalid_record": reason}),
+            problems=[f"invalid record: {reason}"],
+        )

@@ -13,6 +13,7 @@ from typing import Any
 
 from pydantic import TypeAdapter, ValidationError
 
+from ewa_mcp.records import FinalState, TrajectoryLine, WebEvent, record_problem
 from ewa_mcp.taskmodel import SCHEMA_VERSION, AnswerCheck, EmbodiedGoal, Task, WebGoal
 
 EPISODE_FILES = ("task.json", "trajectory.jsonl", "web_events.jsonl", "final_state.json")
@@ -57,6 +58,14 @@ class EpisodeRecord:
     events: list[dict[str, Any]]
     final_state: dict[str, Any] | None
     problems: list[str] = field(default_factory=list)
+    # Parts of the record that do not fit its declared format (ewa_mcp/records.py): the episode is then an
+    # invalid_record failure, graded from what remained valid, and never crashes the run's grading.
+    invalid: list[str] = field(default_factory=list)
+
+    @property
+    def unfinished(self) -> bool:
+        """The episode never ended (no final_state.json): the server or the harness died mid-episode."""
+        return not (self.directory / "final_state.json").exists()
 
     @property
     def episode_id(self) -> str:
@@ -192,17 +201,35 @@ def read_episode(directory: Path) -> EpisodeRecord:
         problems.append("task.json is not a JSON object: the goals are unknown, so the episode cannot be graded")
     else:
         task = task_view(raw_task, problems)
-    trajectory = read_jsonl(directory / "trajectory.jsonl", problems)
+    invalid: list[str] = []
+    trajectory = _valid_lines(read_jsonl(directory / "trajectory.jsonl", problems), TrajectoryLine,
+                              "trajectory.jsonl", invalid)
     if not (directory / "trajectory.jsonl").exists():
         problems.append("trajectory.jsonl missing: steps and error analysis use final_state.json only")
-    events = read_jsonl(directory / "web_events.jsonl", problems)
+    events = _valid_lines(read_jsonl(directory / "web_events.jsonl", problems), WebEvent, "web_events.jsonl", invalid)
     final_state = _read_json(directory / "final_state.json", problems)
-    if final_state is not None and not isinstance(final_state, dict):
-        problems.append("final_state.json is not a JSON object; ignored")
-        final_state = None
+    if final_state is None and (directory / "final_state.json").exists():
+        invalid.append("final_state.json is not readable JSON")
+    elif final_state is not None:
+        why = record_problem(FinalState, final_state, "final_state.json")
+        if why is not None:
+            invalid.append(why)
+            final_state = None
     if final_state is None and not (directory / "final_state.json").exists():
         problems.append(
             "final_state.json missing (the episode did not end cleanly): embodied goals cannot be checked; "
             "web goals are graded from web_events.jsonl"
         )
-    return EpisodeRecord(directory, task, trajectory, events, final_state, problems)
+    problems.extend(f"invalid record: {why}" for why in invalid)
+    return EpisodeRecord(directory, task, trajectory, events, final_state, problems, invalid)
+
+
+def _valid_lines(lines: list[dict[str, Any]], model: Any, name: str, invalid: list[str]) -> list[dict[str, Any]]:
+    kept = []
+    for number, line in enumerate(lines, start=1):
+        why = record_problem(model, line, f"{name} record {number}")
+        if why is None:
+            kept.append(line)
+        else:
+            invalid.append(why)
+    return kept

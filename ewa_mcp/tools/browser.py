@@ -1,7 +1,7 @@
 """Browser tools: WebArena's action grammar on an episode's web environment.
 
 click, type, hover, press, scroll, new_tab, close_tab, tab_focus, goto, go_back, go_forward,
-plus snapshot and screenshot on demand (not counted as steps). Every tool returns the new
+plus snapshot and screenshot on demand (steps like every call). Every tool returns the new
 observation. This module must not import Playwright: the server imports every tool group at
 start, and a server that never runs a web task never needs a browser.
 """
@@ -55,9 +55,8 @@ def _method(name: str, *args: Any, **kwargs: Any) -> Callable[[Any], Awaitable[O
 
 def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
     async def act(episode_id: str, tool: str, args: dict[str, Any], method: str, *call_args: Any,
-                  counted: bool = True, **call_kwargs: Any) -> CallToolResult:
-        return await env_action(episodes, episode_id, tool, args, "web", _method(method, *call_args, **call_kwargs),
-                                counted=counted)
+                  **call_kwargs: Any) -> CallToolResult:
+        return await env_action(episodes, episode_id, tool, args, "web", _method(method, *call_args, **call_kwargs))
 
     @mcp.tool(description="Click an element of the current page.", annotations=ACTION)
     async def browser_click(episode_id: EpisodeId, element: Element) -> Result:
@@ -119,7 +118,7 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         return await act(episode_id, "browser_go_forward", {}, "go_forward")
 
     @mcp.tool(
-        description="Show the current page's accessibility tree again (not counted as a step); viewport_only limits "
+        description="Show the current page's accessibility tree again (counts as a step, like every call); viewport_only limits "
         "it to what is on screen, max_chars sets the size budget.",
         annotations=READ_ONLY,
     )
@@ -129,12 +128,12 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         max_chars: Annotated[int | None, Field(ge=500, le=500_000)] = None,
     ) -> Result:
         args = {"viewport_only": viewport_only, "max_chars": max_chars}
-        return await act(episode_id, "browser_snapshot", args, "snapshot", viewport_only, max_chars, counted=False)
+        return await act(episode_id, "browser_snapshot", args, "snapshot", viewport_only, max_chars)
 
     @mcp.tool(
         description="A screenshot of the current tab with each interactive element boxed and labelled by its id "
-        "(Set-of-Marks); not counted as a step.",
+        "(Set-of-Marks); counts as a step, like every call.",
         annotations=READ_ONLY,
     )
     async def browser_screenshot(episode_id: EpisodeId) -> Result:
-        return await act(episode_id, "browser_screenshot", {}, "screenshot", counted=False)
+        return await act(episode_id, "browser_screenshot", {}, "screenshot")

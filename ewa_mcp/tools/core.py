@@ -56,6 +56,8 @@ class EpisodeStatus(BaseModel):
     step_limit: int
     steps_left: int
     switches: int
+    walk_stopped: bool | None = Field(
+        default=None, description="tasks with a walk: whether street_stop ended it; null when there is no walk")
     answer: str | None
 
 
@@ -132,10 +134,9 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         )
         return tool_result(out, text, observation.images)
 
-    @mcp.tool(description="Show the active environment's observation again (does not count as a step).")
+    @mcp.tool(description="Show the active environment's observation again (counts as a step, like every call).")
     async def get_observation(episode_id: EpisodeId) -> Annotated[CallToolResult, StepOutput]:
-        episode, observation = await episodes.act(episode_id, "get_observation", {}, _observe,
-                                                  environment=None, counted=False)
+        episode, observation = await episodes.act(episode_id, "get_observation", {}, _observe, environment=None)
         return step_result(episode, observation)
 
     @mcp.tool(description="Switch the active environment (web <-> embodied). Say in message what you will do there.")
@@ -147,21 +148,33 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         episode, observation = await episodes.switch(episode_id, target, message)
         return step_result(episode, observation)
 
-    @mcp.tool(description="End the episode, with your answer when the task asks a question.")
+    @mcp.tool(description=(
+        "End the episode, with your answer when the task asks a question. Nothing can be done after it. Where a "
+        "task involves a walk, the walk ends at your first street_stop or, without one, here: where you stand "
+        "now is graded. Geolocation tasks end with submit_location instead."))
     async def finish_episode(
         episode_id: EpisodeId, answer: Annotated[str | None, Field(max_length=4000)] = None
     ) -> Annotated[CallToolResult, EpisodeStatus]:
         episode = await episodes.finish(episode_id, answer)
         return tool_result(EpisodeStatus(**episode.summary()), f"Episode {episode.id} finished. {footer(episode)}")
 
-    @mcp.tool(description="The episode's status: active environment, steps used and left, whether it ended.")
+    @mcp.tool(description=(
+        "The episode's status: active environment, steps used and left, whether the walk is stopped (tasks with "
+        "a walk), whether the episode ended. On a running episode it counts as a step, like every call."))
     async def episode_status(episode_id: EpisodeId) -> Annotated[CallToolResult, EpisodeStatus]:
         episode = episodes.get(episode_id)
+        if episode.status == "running":
+            async def note(_: Any) -> Observation:
+                return Observation(text="episode status")
+
+            episode, _ = await episodes.act(episode_id, "episode_status", {}, note, environment=None)
         s = episode.summary()
+        walk = s.get("walk_stopped")
         text = (
             f"{episode.id}: task {episode.task.id} ({episode.task.domain}), {episode.status}"
             + (f" ({episode.end_reason})" if episode.end_reason else "")
             + f"; active {episode.active}; steps {episode.steps}/{episode.task.step_limit}; switches {episode.switches}"
+            + ("" if walk is None else ("; walk stopped" if walk else "; walk not stopped"))
         )
         return tool_result(EpisodeStatus(**s), text)
 

@@ -58,13 +58,13 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         "Geolocation: look around from the current standpoint. direction='all' shows every view the setting "
         "allows (embodied: north, east, south, west; baseline: north only) and the neighbouring standpoints with "
         "absolute and relative heading and distance; a single direction also turns you to face it. Views come "
-        "as descriptions (text mode) and/or images (vision mode). Does not count as a step."))
+        "as descriptions (text mode) and/or images (vision mode). Counts as a step, like every call."))
     async def geo_look(
         episode_id: EpisodeId,
         direction: Literal["all", "north", "east", "south", "west"] = "all",
     ) -> Annotated[CallToolResult, StepOutput]:
         return await env_action(episodes, episode_id, "geo_look", {"direction": direction}, "embodied",
-                                lambda env: _geo(env).look(direction), counted=False)
+                                lambda env: _geo(env).look(direction))
 
     @mcp.tool(description=(
         "Geolocation (embodied setting): walk to an adjacent standpoint: direction forward/left/right/back "
@@ -94,19 +94,19 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
     ) -> Annotated[CallToolResult, SubmissionOutput]:
         args = {"lat": lat, "lng": lng, "continent": continent, "country": country, "city": city, "street": street}
         problem = validate_submission(lat, lng, continent, country)
-        if problem is not None:
-            async def refuse(_episode: Any) -> Observation:
+
+        def check(_episode: Any) -> None:
+            # Refused like any failed call: recorded, one step used, the episode stays open.
+            if problem is not None:
                 raise ToolError(problem)
 
-            # Recorded in the trajectory but not counted as a step; the episode stays open.
-            await episodes.act(episode_id, "submit_location", args, refuse, environment=None, counted=False)
         submission = {k: (v.strip() if isinstance(v, str) else v) or None for k, v in args.items()
                       if k not in ("lat", "lng")}
         submission = {"lat": float(lat), "lng": float(lng), **submission}
         answer = (f"{lat:.5f}, {lng:.5f} — " + ", ".join(submission[k] or "?" for k in
                                                           ("continent", "country", "city", "street")))
         episode = await episodes.finish(episode_id, answer=answer, submission=submission, tool="submit_location",
-                                        args=args)
+                                        args=args, requires="geo", check=check)
         out = SubmissionOutput(episode_id=episode.id, status=episode.status, end_reason=episode.end_reason,
                                steps=episode.steps, submission=submission)
         return tool_result(out, f"Location submitted: {answer}. {footer(episode)}")

@@ -29,7 +29,7 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         "Look around in the street: your street and heading, the neighbouring panorama nodes (absolute and "
         "relative heading, distance, street name) and a description of four views (front/right/back/left, or "
         "north/east/south/west with frame='absolute'); view images too when the episode's observation option is "
-        "vision or both. Does not count as a step."))
+        "vision or both. Counts as a step, like every call."))
     async def street_observe(
         episode_id: EpisodeId,
         frame: Literal["relative", "absolute"] = "relative",
@@ -37,8 +37,7 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         async def act(env: object) -> Observation:
             return _street(env).observation(frame)
 
-        return await env_action(episodes, episode_id, "street_observe", {"frame": frame}, "embodied", act,
-                                counted=False)
+        return await env_action(episodes, episode_id, "street_observe", {"frame": frame}, "embodied", act)
 
     @mcp.tool(description=(
         "Walk to a neighbouring node: direction forward/left/right/back (relative to your heading), or "

@@ -117,9 +117,9 @@ async def test_embodied_moves_views_and_neighbours(server):
                     yield from keys(v)
         assert not {"lat", "lng", "location_id", "city", "country"} & set(keys(r.structured_content))
         state = await status(client, episode_id)
-        assert state["steps"] == 2  # moves count, looks do not
+        assert state["steps"] == 4  # every call counts: two moves, a look and this status call
     trajectory = (run_dir / episode_id / "trajectory.jsonl").read_text(encoding="utf-8").splitlines()
-    assert [json.loads(line)["tool"] for line in trajectory][-3:] == ["geo_move", "geo_move", "geo_look"]
+    assert [json.loads(line)["tool"] for line in trajectory][-4:] == ["geo_move", "geo_move", "geo_look", "episode_status"]
 
 
 async def test_bad_moves_and_looks_change_nothing(server):
@@ -181,7 +181,8 @@ async def test_invalid_submissions_are_refused_and_the_episode_stays_open(server
         r = await client.call_tool("submit_location", {"episode_id": episode_id, **args})
         assert r.is_error and expected in text_of(r), text_of(r)
         state = await status(client, episode_id)
-        assert state["status"] == "running" and state["steps"] == 0 and state["answer"] is None
+        # the refused submission and this status call are steps, like every call
+        assert state["status"] == "running" and state["steps"] == 2 and state["answer"] is None
         r = await client.call_tool("submit_location", {"episode_id": episode_id, "lat": 48.86, "lng": 2.32,
                                                       "country": "FR", "continent": "EU"})
         assert not r.is_error

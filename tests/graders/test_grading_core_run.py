@@ -92,7 +92,7 @@ async def test_core_run_directory_is_graded(tmp_path: Path) -> None:
     by_task = {e.task_id: e for e in report.episodes}
     good, bad = by_task["cook-good"], by_task["cook-bad"]
     assert good.overall_success is True and good.problems == [] and good.status == "finished"
-    assert (good.steps, good.switches) == (1, 1)  # the switch is a counted step; start and finish are not
+    assert (good.steps, good.switches) == (2, 1)  # the switch and the finish are steps; start is not
     assert good.wall_time_s is not None
     assert bad.web_success is True and bad.embodied_success is False and bad.completion == pytest.approx(2 / 3)
     assert report.domains["cooking"].overall_accuracy.successes == 1

@@ -217,7 +217,9 @@ def test_the_fixture_run_has_the_intended_outcomes(graded: tuple[RunReport, Path
     assert episodes["cook-good"].overall_success is True
     assert episodes["cook-bad"].overall_success is False
     assert episodes["cook-bad"].error is not None and episodes["cook-bad"].error.category == "failed_to_reach_object"
-    assert episodes["cook-crash"].overall_success is None and episodes["cook-crash"].status == "incomplete"
+    # a trajectory line that breaks the record format makes the crashed episode an invalid record (a failure)
+    assert episodes["cook-crash"].overall_success is False and episodes["cook-crash"].status == "incomplete"
+    assert episodes["cook-crash"].error is not None and episodes["cook-crash"].error.category == "invalid_record"
     assert page_path.name == "model-a.html"
 
 

@@ -65,6 +65,8 @@ async def test_walk_to_a_store_over_mcp(tmp_path, world, street_only):
     assert street["path"] == directions.nodes
     lines = (tmp_path / "run" / ep / "trajectory.jsonl").read_text().splitlines()
     moves = [json.loads(line) for line in lines if json.loads(line)["tool"] == "street_move"]
-    # every walked step plus the refused move after stop (the invalid "sideways" never reached the episode)
-    assert len(moves) == len(directions.nodes) - 1 + 1
-    assert [m["ok"] for m in moves] == [True] * (len(directions.nodes) - 1) + [False]
+    # every walked step, the invalid "sideways" (refused by the schema, still a recorded step) and the
+    # refused move after stop
+    assert len(moves) == len(directions.nodes) - 1 + 2
+    assert [m["ok"] for m in moves] == [True] * (len(directions.nodes) - 1) + [False, False]
+    assert moves[-2]["args"] == {"direction": "sideways"} and moves[-2]["counted"] is True
