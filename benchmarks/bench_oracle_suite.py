@@ -60,6 +60,10 @@ def main() -> None:
                           "accuracy": round(v["overall_success"] / v["episodes"], 4),
                           "mean_episode_seconds": round(v["episode_seconds"] / v["episodes"], 3)}
                       for d, v in sorted(by_domain.items())},
+        "by_difficulty": {d: {level: {"episodes": agg.n, "overall_success": agg.overall_accuracy.successes,
+                                      "accuracy": agg.overall_accuracy.value}
+                              for level, agg in levels.items()}
+                          for d, levels in sorted(report.by_difficulty.items())},
         "failures": failures[:20],
         "target": {"minutes": 20, "met": played <= 1200},
         "run_dir": str(run_dir),

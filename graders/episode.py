@@ -181,6 +181,7 @@ def grade_record(record: EpisodeRecord, radius_m: float | None = None) -> Episod
         episode_id=record.episode_id,
         task_id=task.id if task is not None else final.get("task_id"),
         domain=domain,
+        difficulty=task.difficulty if task is not None else None,
         setting=_setting(task, final) if task is not None and domain == "geolocation" else None,
         status=final.get("status", "incomplete") if record.final_state is not None else "incomplete",
         end_reason=final.get("end_reason"),

@@ -53,6 +53,7 @@ class EpisodeResult(BaseModel):
     episode_id: str
     task_id: str | None
     domain: str
+    difficulty: str | None = Field(default=None, description="easy | medium | hard, from task.json")
     setting: str | None = None  # geolocation: baseline | embodied
     status: str = Field(description="finished | step_limit | aborted from final_state.json; incomplete when missing")
     end_reason: str | None = None
@@ -139,6 +140,8 @@ class RunReport(BaseModel):
     radius_m: float | None = Field(description="the --radius override; None = each task's own radius (25 m default)")
     n_episodes: int
     domains: dict[str, DomainAggregate]
+    by_difficulty: dict[str, dict[str, DomainAggregate]] = Field(
+        default_factory=dict, description="domain -> difficulty (easy, medium, hard) -> aggregate over those tasks")
     demo: DomainAggregate | None = None
     errors: dict[str, ErrorBreakdown] = Field(description="per domain, plus 'all' over every non-demo domain")
     episodes: list[EpisodeResult]

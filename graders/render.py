@@ -71,6 +71,21 @@ def main_table(reports: list[RunReport]) -> Table:
     return Table("Results by domain", ["Domain", "Metric", *(r.label for r in reports)], rows, note)
 
 
+def difficulty_table(reports: list[RunReport]) -> Table | None:
+    """Overall accuracy and completion per domain and difficulty (tasks record easy / medium / hard)."""
+    rows: list[list[str]] = []
+    for domain in _all_domains(reports):
+        levels = [lv for lv in ("easy", "medium", "hard") if any(lv in r.by_difficulty.get(domain, {}) for r in reports)]
+        for level in levels:
+            aggs = [r.by_difficulty.get(domain, {}).get(level) for r in reports]
+            rows.append([domain, level, *(f"{pct(a.overall_accuracy, False)} / {pct(a.completion_rate, False)} "
+                                          f"(n={a.n})" if a is not None else "-" for a in aggs)])
+    if not rows:
+        return None
+    return Table("By difficulty: overall accuracy / completion", ["Domain", "Difficulty", *(r.label for r in reports)],
+                 rows, "Percent of the episodes of that domain and difficulty.")
+
+
 def navigation_table(reports: list[RunReport]) -> Table | None:
     rows: list[list[str]] = []
     for domain in _all_domains(reports):
@@ -194,7 +209,7 @@ def render(reports: list[RunReport], fmt: str) -> str:
     parts: list[str] = []
     heading = "Runs: " + ", ".join(f"{r.label} ({r.run_dir}, {r.n_episodes} episodes)" for r in reports)
     parts.append(heading if fmt == "table" else f"## ewa-grade report\n\n{heading}")
-    sections: list[Table | str | None] = [main_table(reports), navigation_table(reports),
+    sections: list[Table | str | None] = [main_table(reports), difficulty_table(reports), navigation_table(reports),
                                           geolocation_section(reports), *error_tables(reports), demo_table(reports)]
     for section in sections:
         if section is None:

@@ -11,6 +11,7 @@ from .models import EpisodeResult, ErrorClassification, RunReport
 from .rundir import EPISODE_FILES, episode_dirs
 
 DOMAIN_ORDER = ("navigation", "shopping", "traveling", "cooking", "geolocation")
+DIFFICULTY_ORDER = ("easy", "medium", "hard")
 
 
 class RunDirError(ValueError):
@@ -53,6 +54,9 @@ def grade_run(run_dir: str | Path, radius_m: float | None = None, label: str | N
         radius_m=radius_m,
         n_episodes=len(episodes),
         domains={d: domain_aggregate(d, eps) for d, eps in by_domain.items()},
+        by_difficulty={d: {level: domain_aggregate(d, [e for e in eps if e.difficulty == level])
+                           for level in DIFFICULTY_ORDER if any(e.difficulty == level for e in eps)}
+                       for d, eps in by_domain.items() if any(e.difficulty for e in eps)},
         demo=domain_aggregate("demo", demo) if demo else None,
         errors=errors,
         episodes=episodes,

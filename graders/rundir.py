@@ -47,6 +47,7 @@ class TaskView:
     embodied_kind: str | None
     start_setting: str | None
     unreadable: list[UnreadableGoal] = field(default_factory=list)
+    difficulty: str | None = None
     answer_unreadable: str | None = None
 
 
@@ -162,6 +163,7 @@ def task_view(raw: dict[str, Any], problems: list[str]) -> TaskView:
             has_embodied_env=embodied is not None,
             embodied_kind=embodied.kind if embodied is not None else None,
             start_setting=getattr(embodied, "setting", None),
+            difficulty=task.difficulty if "difficulty" in raw else None,
         )
     unreadable: list[UnreadableGoal] = []
     web_goals = _goal_list(raw.get("web_goals"), "web", _WEB_GOAL, unreadable)
@@ -187,6 +189,7 @@ def task_view(raw: dict[str, Any], problems: list[str]) -> TaskView:
         start_setting=embodied_start.get("setting") if embodied_start else None,
         unreadable=unreadable,
         answer_unreadable=answer_unreadable,
+        difficulty=raw.get("difficulty") if raw.get("difficulty") in ("easy", "medium", "hard") else None,
     )
 
 

@@ -152,3 +152,23 @@ def test_t_interval_contains_the_mean_and_narrows_with_more_data(values: list[fl
     assert 0.0 <= low <= mean <= high <= 1.0
     _, low4, high4 = mean_t_interval(values * 4)  # same spread, four times the data
     assert high4 - low4 <= high - low + 1e-12
+
+
+def test_results_break_down_by_difficulty(tmp_path: Path) -> None:
+    from grading_builders import EpisodeBuilder, kitchen_state, kitchen_task, obj
+
+    from ewa_mcp.graders import grade_run, render_report
+
+    goals = [{"kind": "object_state", "object_type": "Bread", "prop": "isCooked"}]
+    for n, (level, cooked) in enumerate([("easy", True), ("easy", False), ("hard", False)]):
+        task = kitchen_task(f"cook-{n}", embodied_goals=goals, difficulty=level)
+        ep = EpisodeBuilder(tmp_path, task).call("start_episode", counted=False)
+        ep.finish(embodied=kitchen_state([obj("Bread", isCooked=cooked)]))
+    report = grade_run(tmp_path)
+    levels = report.by_difficulty["cooking"]
+    assert set(levels) == {"easy", "hard"}
+    assert (levels["easy"].n, levels["easy"].overall_accuracy.successes) == (2, 1)
+    assert (levels["hard"].n, levels["hard"].overall_accuracy.successes) == (1, 0)
+    assert {e.difficulty for e in report.episodes} == {"easy", "hard"}
+    text = render_report(report)
+    assert "By difficulty" in text and "50.0" in text
