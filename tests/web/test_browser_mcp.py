@@ -48,7 +48,7 @@ async def test_browser_tools_through_mcp(server):
         assert "Tab 0 (current):" in _text(started)
 
         snap = await client.call_tool("browser_snapshot", {"episode_id": episode, "viewport_only": True})
-        assert not snap.is_error and snap.structured_content["steps"] == 0  # on-demand views are free
+        assert not snap.is_error and snap.structured_content["steps"] == 1  # every call is a step, looks too
 
         refused = await client.call_tool("browser_goto", {"episode_id": episode, "url": "file:///etc/passwd"})
         assert refused.is_error and "file: URLs are refused" in _text(refused)
@@ -62,7 +62,7 @@ async def test_browser_tools_through_mcp(server):
         clicked = await client.call_tool("browser_click", {"episode_id": episode, "element": match.group(1)})
         assert not clicked.is_error, _text(clicked)
         assert clicked.structured_content["observation"]["url"] == match.group(3)
-        assert clicked.structured_content["steps"] == 3  # two refused actions and the click count
+        assert clicked.structured_content["steps"] == 4  # the snapshot, two refused actions and the click
 
         back = await client.call_tool("browser_go_back", {"episode_id": episode})
         assert not back.is_error, _text(back)
