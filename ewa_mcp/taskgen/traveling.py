@@ -5,11 +5,14 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..graders.textnorm import contains_phrase
+from functools import lru_cache
+
+from ..graders.textnorm import contains_phrase, tokens
 from ..outdoor.world import get_world
-from ..taskmodel import PageVisited, ReachedPlace, StartState, StreetStart, Task, TextAnswer, WebStart
+from ..taskmodel import PageVisited, ReachedPlace, StartState, StreetStart, Task, WebStart
 from ..websites.wiki import store as wiki
-from .common import call, rng_for, site_url, step_limit_for
+from .answer_checks import METRES, YEARS, answer_rule, committed_answer
+from .common import WALK_RULE, call, rng_for, site_url, step_limit_for
 
 TARGET = 130
 MIN_M, MAX_M = 200.0, 1000.0
@@ -20,10 +23,66 @@ QUESTIONS = {
     "height_m": ("How tall is it, in metres?", lambda v: f"{float(v):g}"),
     "opening_hours": ("When is it open?", lambda v: str(v)),
 }
+# The form each answer takes, said in the intent.
+FORMS = {
+    "year_built": "Answer with the year only.",
+    "architect": "Answer with the architect's name as the wiki gives it.",
+    "architectural_style": "Answer with the style's name only.",
+    "height_m": "Answer with the height in metres (a number).",
+    "opening_hours": "Answer with the opening hours as the wiki gives them.",
+}
+NUMBERS = {"year_built": YEARS, "height_m": METRES}
+# The wiki infobox row that holds each fact, for the vocabulary of every attribute.
+INFOBOX = {"year_built": "Year built", "architect": "Architect", "architectural_style": "Architectural style",
+           "height_m": "Height", "opening_hours": "Opening hours"}
 
 
 def article_text(article: Any) -> str:
     return " ".join([article.title, *article.infobox.values(), wiki.plain_text(article.body)])
+
+
+def _fact_text(key: str, value: Any) -> str:
+    if key == "height_m":
+        number = str(value).split()[0] if str(value).split() else ""
+        try:
+            return f"{float(number):g}"
+        except ValueError:
+            return str(value)
+    return wiki.plain_text(str(value)).strip()
+
+
+@lru_cache(maxsize=None)
+def vocabulary(key: str) -> tuple[str, ...]:
+    """Every value the attribute takes across the world's places and the wiki's infoboxes, sorted: the
+    candidates an answer about one landmark must be told apart from."""
+    world = get_world()
+    values = {_fact_text(key, p.facts[key]) for p in world.places.values() if key in p.facts}
+    values |= {_fact_text(key, a.infobox[INFOBOX[key]]) for a in wiki.load_articles() if INFOBOX[key] in a.infobox}
+    if key == "architect":  # and every architect the wiki has an article about
+        values |= {a.title for a in wiki.load_articles() if a.group == "architects"}
+    return tuple(sorted(v for v in values if v))
+
+
+def answer_check(key: str, answer: str) -> Any:
+    """The committed-answer check of one question, or None when no short answer can be told apart from
+    the other candidates (a value such as "Modernism (green skyscraper)" whose plain form, "Modernism",
+    is itself another candidate)."""
+    others = [v for v in vocabulary(key) if tokens(v) != tokens(answer)]
+    other_keys = {tuple(tokens(v)) for v in others}
+    aliases: list[str] = []
+    base = answer.split("(")[0].strip(" ,;:")
+    if base != answer:
+        if tuple(tokens(base)) in other_keys:
+            return None
+        aliases.append(base)
+        if key == "architect":
+            aliases.append(answer[answer.index("(") + 1:].rstrip(")").strip())
+    if key == "architect":
+        article = wiki.find(base)
+        if article is not None and article.group == "architects":
+            aliases += [article.title, *article.aliases]
+    aliases = [a for a in aliases if tuple(tokens(a)) not in other_keys]
+    return committed_answer(answer, others, aliases=aliases, numbers=NUMBERS.get(key))
 
 
 def start_place(world: Any, target: Any, rng: Any) -> tuple[Any, Any] | None:
@@ -61,9 +120,10 @@ def generate() -> list[Task]:
                 continue
             text = article_text(article)
             answerable = [(k, QUESTIONS[k][0], QUESTIONS[k][1](v)) for k, v in sorted(target.facts.items())
-                          if k in QUESTIONS and contains_phrase(text, QUESTIONS[k][1](v))]
+                          if k in QUESTIONS and contains_phrase(text, QUESTIONS[k][1](v))
+                          and answer_check(k, QUESTIONS[k][1](v)) is not None]
             if len(answerable) <= rounds:
-                continue  # validation: the answer must be in our wiki
+                continue  # validation: the answer must be in our wiki, and a short answer must single it out
             key, question, answer = answerable[rounds]
             trng = rng_for("traveling", target.id, rounds)
             found = start_place(world, target, trng)
@@ -72,7 +132,8 @@ def generate() -> list[Task]:
             start, route = found
             corner = start.name.replace(" & ", " and ")
             intent = (f"You are at the corner of {corner}. Walk to {target.address}: {target.description_hint} "
-                      f"When you are there, look it up on the wiki and answer: {question}")
+                      f"{WALK_RULE} When you are there, look it up on the wiki and answer: {question} "
+                      + answer_rule(FORMS[key]))
             end = world.node(target.node)
             oracle = [
                 call("browser_goto", url=site_url("map", "/directions", **{"from": start.id, "to": target.id})),
@@ -86,6 +147,7 @@ def generate() -> list[Task]:
             tasks.append(Task(
                 id=f"traveling-{target.city}-{len(tasks):03d}",
                 domain="traveling",
+                difficulty="medium",
                 intent=intent,
                 start=StartState(environment="web", web=WebStart(start_url="map:/"),
                                  embodied=StreetStart(city=target.city, node=start.node,
@@ -93,7 +155,7 @@ def generate() -> list[Task]:
                 web_goals=[PageVisited(site="wiki", path_prefix=f"/wiki/{article.slug}")],
                 embodied_goals=[ReachedPlace(city=target.city, node=target.node, lat=end.lat, lng=end.lng,
                                              place_id=target.id)],
-                answer=TextAnswer(must_include=[answer]),
+                answer=answer_check(key, answer),
                 step_limit=step_limit_for(len(oracle), slack=30),
                 oracle=oracle,
                 metadata={"poi_id": target.id, "article": article.slug, "question": key,
