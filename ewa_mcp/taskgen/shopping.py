@@ -227,6 +227,53 @@ def nearest_tasks(ctx: Context) -> list[Task]:
     return out
 
 
+def pair_tasks(ctx: Context) -> list[Task]:
+    """Hard: two products, each cheapest at a different store: two orders (one per pickup store, several
+    rounds of product page, cart and checkout), then a walk to whichever of the two stores is nearer."""
+    out: list[Task] = []
+    rng = rng_for("shopping", "pair")
+    for n in slots(out):
+        a, b = rng.sample(ctx.products, 2)
+        size_a, size_b = rng.choice(a.sizes).label, rng.choice(b.sizes).label
+        store_a, store_b = catalog.cheapest_store(a.id, size_a), catalog.cheapest_store(b.id, size_b)
+        if store_a == store_b or not in_stock(a, size_a, store_a) or not in_stock(b, size_b, store_b):
+            continue
+        start = rng.choice(ctx.starts)
+        walks = {sid: ctx.walk(start, sid) for sid in (store_a, store_b)}
+        if abs(walks[store_a].distance_m - walks[store_b].distance_m) < 100:
+            continue  # too close to call: which store is nearer must be unambiguous
+        near = min(walks, key=lambda sid: walks[sid].distance_m)
+        route, place = walks[near], ctx.store_places[near]
+        node = ctx.world.node(place.node)
+        intent = (f"Buy me {a.name} ({size_a}) and {b.name} ({size_b}), each for pickup at the store that sells "
+                  "that item cheapest (one order per store). Then walk from "
+                  f"{start.name} to whichever of those two stores is nearer on foot. {WALK_RULE}")
+        oracle = [*buy_oracle(a, size_a, ctx.stores[store_a]), *buy_oracle(b, size_b, ctx.stores[store_b]),
+                  call("browser_goto", url=site_url("map", "/directions", **{"from": start.name, "to": store_a})),
+                  call("browser_goto", url=site_url("map", "/directions", **{"from": start.name, "to": store_b})),
+                  call("switch_environment", target="embodied", message="walk to the nearer pickup store"),
+                  *[call("street_move", neighbour=x) for x in route.nodes[1:]], call("street_stop"),
+                  call("finish_episode")]
+        links = ctx.world.neighbours(start.node)
+        out.append(Task(
+            id=f"shopping-pair-{n:03d}", domain="shopping", difficulty="hard", intent=intent,
+            start=StartState(environment="web", web=WebStart(start_url="shop:/"),
+                             embodied=StreetStart(city="manhattan", node=start.node,
+                                                  heading=round(rng.choice([lk.heading for lk in links]), 1))),
+            web_goals=[OrderPlaced(product_id=a.id, size=size_a, quantity=1, store_id=store_a),
+                       OrderPlaced(product_id=b.id, size=size_b, quantity=1, store_id=store_b)],
+            embodied_goals=[ReachedPlace(city="manhattan", node=place.node, lat=node.lat, lng=node.lng,
+                                         place_id=near)],
+            step_limit=step_limit_for(len(oracle), slack=40),
+            oracle=oracle,
+            metadata={"store_nodes": {sid: p.node for sid, p in ctx.store_places.items()},
+                      "shortest_path_m": route.distance_m, "start_lat": ctx.world.node(start.node).lat,
+                      "start_lng": ctx.world.node(start.node).lng, "products": [a.id, b.id],
+                      "sizes": [size_a, size_b], "stores": [store_a, store_b], "nearer_store": near},
+        ))
+    return out
+
+
 def generate() -> list[Task]:
     ctx = Context()
-    return cheapest_tasks(ctx) + size_tasks(ctx) + calorie_tasks(ctx) + nearest_tasks(ctx)
+    return cheapest_tasks(ctx) + size_tasks(ctx) + calorie_tasks(ctx) + nearest_tasks(ctx) + pair_tasks(ctx)
