@@ -133,10 +133,40 @@ EmbodiedGoal = Annotated[ObjectState | ObjectIn | ReachedPlace, Field(discrimina
 
 
 # ---------------------------------------------------------------- answers
+class AnswerNumbers(_Strict):
+    """Which numbers in an answer are values of the asked kind (a year, calories, a size in oz).
+
+    The answer may hold no such number besides the expected one: "1713 or 1720" and "120 kcal, maybe 140"
+    fail even when 1720 or 140 is in no distractor list. A number followed by one of ``units`` is of the
+    asked kind; one followed by another unit the grader knows (g, ml, ft, %, ...) is not; a number followed
+    by no unit counts when ``bare`` is true. Only numbers within [``low``, ``high``] count (years: 1000-2100).
+    """
+
+    units: list[str] = Field(default_factory=list)
+    bare: bool = True
+    low: float | None = None
+    high: float | None = None
+
+
 class TextAnswer(_Strict):
+    """A short text answer (docs/grading.md, "Answers that must commit").
+
+    ``must_include``: every phrase must be named (as whole words, after normalisation), or one of its
+    ``aliases`` (accepted other wordings). ``distractors``: the other candidates the answer must be told
+    apart from (the other products compared, the other sizes, every other architect in the wiki, ...);
+    naming any of them fails, also in a negation. ``context``: phrases the answer may repeat freely (the
+    product's name, the amount the intent asked for); they never count as a hedge, a distractor or a
+    rival number. ``numbers``: which numbers are rival values. ``max_chars``: a longer answer fails.
+    """
+
     kind: Literal["text"] = "text"
     must_include: list[str] = Field(default_factory=list)
     exact: str | None = None
+    aliases: dict[str, list[str]] = Field(default_factory=dict)
+    distractors: list[str] = Field(default_factory=list)
+    context: list[str] = Field(default_factory=list)
+    numbers: AnswerNumbers | None = None
+    max_chars: int | None = Field(default=None, ge=1)
 
 
 class GeoAnswer(_Strict):

@@ -5,10 +5,10 @@ from __future__ import annotations
 import importlib
 from typing import Any
 
-from ewa_mcp.taskmodel import GeoAnswer, TextAnswer
+from ewa_mcp.taskmodel import AnswerNumbers, GeoAnswer, TextAnswer
 
 from .models import ConditionResult
-from .textnorm import contains_phrase, normalize
+from .textnorm import HEDGES, KNOWN_UNITS, find_spans, is_number, normalize, number_value, tokens
 
 GEO_MODULE = "ewa_mcp.graders.geo"
 
@@ -17,19 +17,76 @@ def check_text_answer(check: TextAnswer, answer: str | None) -> ConditionResult:
     if check.exact is not None:
         description = f"answer equals {check.exact!r}"
     else:
-        description = "answer mentions " + ", ".join(repr(p) for p in check.must_include)
+        description = "answer names " + ", ".join(repr(p) for p in check.must_include)
+        if check.distractors or check.numbers is not None:
+            description += " and no other candidate"
     if not answer or not answer.strip():
         return ConditionResult(side="answer", kind=check.kind, description=description, met=False,
                                note="no answer was given")
-    missing = [p for p in check.must_include if not contains_phrase(answer, p)]
-    exact_ok = check.exact is None or normalize(answer) == normalize(check.exact)
     note = None
+    if check.max_chars is not None and len(answer.strip()) > check.max_chars:
+        note = f"the answer is {len(answer.strip())} characters; a short answer has at most {check.max_chars}"
+    elif check.exact is not None:
+        if normalize(answer) != normalize(check.exact):
+            note = "not equal to the expected answer"
+    else:
+        note = commitment_problem(check, answer)
+    return ConditionResult(side="answer", kind=check.kind, description=description, met=note is None,
+                           detail={"answer": answer[:200]}, note=note)
+
+
+def commitment_problem(check: TextAnswer, answer: str) -> str | None:
+    """Why the answer does not commit to the expected answer, or None when it does (docs/grading.md).
+
+    Each phrase (expected wording, distractor, context) is found as whole tokens; an occurrence lying
+    inside a longer occurrence of another phrase is part of that phrase, not a mention of its own
+    ("Modernism" inside "Late Modernism"). What the expected and context occurrences leave over must
+    hold no hedge and no rival number."""
+    toks = tokens(answer)
+    found: list[tuple[int, int, str, str]] = []  # start, end, role, phrase
+    for phrase in check.must_include:
+        for wording in [phrase, *check.aliases.get(phrase, [])]:
+            found += [(a, b, "expected", phrase) for a, b in find_spans(toks, tokens(wording))]
+    for phrase in check.distractors:
+        found += [(a, b, "distractor", phrase) for a, b in find_spans(toks, tokens(phrase))]
+    for phrase in check.context:
+        found += [(a, b, "context", phrase) for a, b in find_spans(toks, tokens(phrase))]
+    kept = [f for f in found
+            if not any(g[0] <= f[0] and f[1] <= g[1] and g[1] - g[0] > f[1] - f[0] for g in found)]
+    missing = [p for p in check.must_include
+               if tokens(p) and not any(f[2] == "expected" and f[3] == p for f in kept)]
     if missing:
-        note = "missing: " + ", ".join(repr(p) for p in missing)
-    elif not exact_ok:
-        note = "not equal to the expected answer"
-    return ConditionResult(side="answer", kind=check.kind, description=description,
-                           met=not missing and exact_ok, detail={"answer": answer[:200]}, note=note)
+        return "missing: " + ", ".join(repr(p) for p in missing)
+    named = list(dict.fromkeys(f[3] for f in kept if f[2] == "distractor"))
+    if named:
+        shown = ", ".join(repr(p[:60]) for p in named[:3]) + (f" and {len(named) - 3} more" if len(named) > 3 else "")
+        return f"names other candidates too: {shown} (an answer must name only the expected one)"
+    covered = {i for f in kept if f[2] in ("expected", "context") for i in range(f[0], f[1])}
+    rest = [i for i in range(len(toks)) if i not in covered]
+    hedges = [toks[i] for i in rest if toks[i] in HEDGES]
+    hedges += [toks[i - 1] + "'t" for i in rest if toks[i] == "t" and i > 0 and toks[i - 1].endswith("n")]
+    if hedges:
+        return f"hedges or denies ({', '.join(repr(h) for h in dict.fromkeys(hedges))}); state one answer"
+    if check.numbers is not None:
+        rivals = [toks[i] for i in rest if is_number(toks[i]) and is_rival(toks, i, check.numbers)]
+        if rivals:
+            return f"gives other values of the asked kind too: {', '.join(repr(r) for r in dict.fromkeys(rivals))}"
+    return None
+
+
+def is_rival(toks: list[str], i: int, rule: AnswerNumbers) -> bool:
+    """Whether the number at ``toks[i]`` is a value of the asked kind (its unit, its range)."""
+    value = number_value(toks[i])
+    if (rule.low is not None and value < rule.low) or (rule.high is not None and value > rule.high):
+        return False
+    after = toks[i + 1:]
+    for unit in rule.units:
+        unit_tokens = tokens(unit)
+        if unit_tokens and after[:len(unit_tokens)] == unit_tokens:
+            return True
+    if after and after[0] in KNOWN_UNITS:
+        return False
+    return rule.bare
 
 
 def geo_module() -> tuple[Any | None, str | None]:
