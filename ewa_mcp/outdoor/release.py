@@ -352,14 +352,24 @@ def import_file(path: Path, out: Path, annotations_path: Path | None = None, *, 
     streets_dir, task_dir = out / "streets", out / "navigation" / city
     streets_dir.mkdir(parents=True, exist_ok=True)
     graph_path = streets_dir / f"{city}.json.gz"
-    with open(graph_path, "wb") as fh, gzip.GzipFile(fileobj=fh, mode="wb", mtime=0) as gz:
-        gz.write(json.dumps(build.graph, separators=(",", ":"), sort_keys=True, ensure_ascii=False).encode())
 
     from ..websites.map.places import WorldAdapter
     from .world import World
 
-    world = World(data_dirs=[streets_dir])
-    resolver = WorldAdapter(world)
+    for attempt in range(2):
+        with open(graph_path, "wb") as fh, gzip.GzipFile(fileobj=fh, mode="wb", mtime=0) as gz:
+            gz.write(json.dumps(build.graph, separators=(",", ":"), sort_keys=True, ensure_ascii=False).encode())
+        world = World(data_dirs=[streets_dir])
+        resolver = WorldAdapter(world)
+        # A name another imported file or a packaged place also answers to gets the file's name added,
+        # so that what the intent says is what the map finds.
+        unclear = [pl for pl in book.places if getattr(resolver.resolve(pl["name"]).place, "id", None) != pl["id"]]
+        if not unclear or attempt:
+            break
+        for pl in unclear:
+            pl["name"] = pl["address"] = f"{pl['name']} ({path.stem})"
+            report.notes.append(f"the map also knows another place named like {quote(pl['name'])}; "
+                                f"the name now ends in ({path.stem})")
     tasks = [make_task(p, city, path.name, world, resolver, report) for p in planned]
     if task_dir.exists():
         shutil.rmtree(task_dir)  # a re-import replaces the city's tasks
