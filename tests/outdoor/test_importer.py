@@ -135,3 +135,20 @@ def test_cli_imports_and_prints_counts(tmp_path, capsys):
     assert f"ewa-mcp eval --tasks-dir {tmp_path / 'out'}" in out
     assert cli_main(["tasks", "validate", "--tasks", str(tmp_path / "out")]) == 0
     assert cli_main(["tasks", "import-ewa", str(tmp_path / "nope.json"), "--out", str(tmp_path / "out")]) == 2
+
+
+def test_a_name_another_imported_file_uses_gets_the_file_name(tmp_path):
+    ann = tmp_path / "ann.json"
+    ann.write_text(json.dumps({"walk": fx.ANNOTATIONS[0]}))
+    for name in ("first", "second"):
+        (tmp_path / f"{name}.json").write_text(json.dumps({"walk": fx.WALK}, ensure_ascii=False), encoding="utf-8")
+    first = release.import_file(tmp_path / "first.json", tmp_path / "out", ann)
+    second = release.import_file(tmp_path / "second.json", tmp_path / "out", ann)
+    assert '"40 Beacon Row, New York, NY"' in first.tasks[0]["intent"]
+    assert '"40 Beacon Row, New York, NY (second)"' in second.tasks[0]["intent"]
+    resolver = WorldAdapter(World(data_dirs=[tmp_path / "out" / "streets"]))
+    for result in (first, second):
+        task = result.tasks[0]
+        start_name = task["intent"].split('"')[1]
+        assert resolver.resolve(start_name).place.id == task["web_goals"][0]["origin"]
+        assert task["web_goals"][0]["origin"].startswith(f"place-{result.city}-")
