@@ -34,7 +34,6 @@ from .importer import (
 )
 
 ANNOTATION_NEAR_M = 150.0  # annotation coordinates further than this from the environment are not its own
-SAME_PLACE_M = 15.0  # one address text at two nodes further apart is two places
 MAX_RADIUS_M = 10.0
 CURRENT_LOCATION = re.compile(r"^(my |the )?current location$", re.IGNORECASE)
 COORD = re.compile(r"^\s*\(?\s*(-?\d+(?:\.\d+)?)\s*,\s*(-?\d+(?:\.\d+)?)\s*\)?\s*$")
@@ -184,7 +183,8 @@ def _fold(text: str) -> str:
 
 
 class PlaceBook:
-    """The named places of one imported city; one text at one spot is one place."""
+    """The named places of one imported city; one text at one node is one place, and the same text at
+    another node is a second place with the route added to its name."""
 
     def __init__(self, city: str, build: CityBuild):
         self.city, self.build = city, build
@@ -196,7 +196,7 @@ class PlaceBook:
         for candidate in (name, f"{name} ({fallback})"):
             same = self.by_name.get(_fold(candidate), [])
             for p in same:
-                if haversine_m(p["lat"], p["lng"], lat, lng) <= SAME_PLACE_M:
+                if p["node"] == node:  # the task's walk starts/ends exactly where the map's place is
                     return p
             if not same:
                 place = {"id": f"place-{self.city}-{len(self.places):04d}", "name": candidate, "kind": "address",
@@ -244,6 +244,8 @@ def plan(envs: list[Environment], build: CityBuild, annotations: dict[str, Annot
         if ann is not None and belongs:
             start_text = ann.start_text
             end_text = ann.end_text or ann.general_name
+            if start_text and end_text and _fold(start_text) == _fold(end_text):
+                start_text = None  # one address for both ends: the start is named after the route
         label = f"route {env.label}"
         start_name = start_text or f"Start of {label} {_street(build, s)}"
         end_name = end_text or f"End of {label} {_street(build, t)}"
