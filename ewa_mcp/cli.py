@@ -76,6 +76,13 @@ def cmd_tasks(args: argparse.Namespace) -> int:
         else:
             sys.stdout.write(text)
         return 0
+    if args.action == "import-ewa":
+        from .outdoor.release import run_cli
+
+        return run_cli(args.paths, args.output, args.annotations)
+    if args.paths:
+        print(f"error: tasks {args.action} takes no PATH arguments", file=sys.stderr)
+        return 2
     roots = [Path(p) for p in args.tasks] if args.tasks else [tasks_dir()]
     store = TaskStore(roots)
     tasks = store.all()
@@ -176,11 +183,16 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--base-port", type=int, default=0, help="first port (default: 8701..8705)")
     p.set_defaults(func=cmd_sites)
 
-    p = sub.add_parser("tasks", help="list, validate or generate task suites; export the task JSON Schema")
-    p.add_argument("action", choices=["list", "validate", "generate", "schema"])
+    p = sub.add_parser("tasks", help="list, validate, generate or import task suites; export the task JSON Schema")
+    p.add_argument("action", choices=["list", "validate", "generate", "schema", "import-ewa"])
+    p.add_argument("paths", nargs="*", metavar="PATH", help="import-ewa: the paper's navi_env_merge_v1.json (or "
+                   "any file of its environments)")
     p.add_argument("--tasks", action="append", metavar="DIR")
     p.add_argument("--domain", action="append", help="restrict to a domain (repeatable)")
-    p.add_argument("-o", "--output", help="output file (schema) or directory (generate)")
+    p.add_argument("-o", "--output", "--out", dest="output", help="output file (schema) or directory (generate; "
+                   "import-ewa, default ~/.local/share/ewa-mcp/imported)")
+    p.add_argument("--annotations", metavar="FILE", help="import-ewa: the release's annotation file (default: the "
+                   "navi_anno*.json beside PATH; 'none' to ignore it)")
     p.set_defaults(func=cmd_tasks)
 
     p = sub.add_parser("eval", help="run an agent over tasks through the MCP server, then grade the run")

@@ -65,6 +65,12 @@ class ServerConfig:
 def build_server(config: ServerConfig | None = None) -> tuple[MCPServer, EpisodeManager]:
     config = config or ServerConfig()
     tasks = TaskStore(config.task_dirs or [tasks_dir()])
+    # Imported task directories carry their street graphs in a streets/ folder (ewa-mcp tasks import-ewa).
+    streets = [Path(d) / "streets" for d in tasks.roots if (Path(d) / "streets").is_dir()]
+    if streets:
+        from .outdoor.world import use_street_data
+
+        use_street_data(streets)
     run_dir = config.run_dir or (runs_dir() / new_run_id())
     services = Services(config.services)
     episodes = EpisodeManager(tasks, run_dir, services, config.environments)

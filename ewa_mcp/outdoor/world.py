@@ -137,6 +137,8 @@ class CityGraph:
             tuple(sorted({self.streets[s] for _, _, s, _ in links})) for links in self.adj
         ]
         self.poi_links: dict[str, list] = data.get("pois", {})
+        # Imported graphs carry their own named places (a task's start and destination addresses).
+        self.extra_places: list[dict[str, Any]] = data.get("places", [])
         self.street_key: list[str] = [normalize_street(s, self.aliases) for s in self.streets]
         self.nodes_by_key: dict[str, set[int]] = {}
         self.nodes_by_loose: dict[str, set[int]] = {}
@@ -244,6 +246,12 @@ class World:
                 lat=p["lat"], lng=p["lng"], node=link[0], facts=dict(p.get("facts", {})),
                 description_hint=p.get("description_hint", ""), heading_from_node=link[1], offset_m=link[2],
             )
+        for graph in self.cities_by_name.values():
+            for p in graph.extra_places:
+                if p.get("node") in graph.index:
+                    self.places[p["id"]] = Place(id=p["id"], name=p["name"], kind=p.get("kind", "address"),
+                                                 city=graph.city, address=p.get("address", p["name"]),
+                                                 lat=p["lat"], lng=p["lng"], node=p["node"])
         self._folded = {pid: _fold(f"{p.name} {p.kind}") for pid, p in self.places.items()}
         self._folded_address = {pid: _fold(p.address) for pid, p in self.places.items()}
         self.places_at: dict[str, list[Place]] = {}
@@ -517,6 +525,19 @@ def _read(path: Path) -> dict[str, Any]:
 def _extra_dirs() -> list[Path]:
     value = os.environ.get(EXTRA_DATA_ENV, "")
     return [Path(p) for p in value.split(os.pathsep) if p]
+
+
+def use_street_data(dirs: list[Path]) -> None:
+    """Add directories of street graph files to the world ($EWA_STREET_DATA, so server processes
+    started from here see them too); a world already loaded is reloaded on next use."""
+    global _world
+    current = [str(p) for p in _extra_dirs()]
+    new = [str(d) for d in dirs if Path(d).is_dir() and str(d) not in current]
+    if not new:
+        return
+    os.environ[EXTRA_DATA_ENV] = os.pathsep.join(current + new)
+    with _lock:
+        _world = None
 
 
 _lock = threading.Lock()

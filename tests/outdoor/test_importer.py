@@ -1,68 +1,154 @@
-"""The importer for the paper's navigation environment format, on a small hand-written file."""
+"""Importing the paper's released navigation environments, on small files written in its shapes."""
 
+from __future__ import annotations
+
+import gzip
 import json
 
 import pytest
 
-from ewa_mcp.outdoor import importer, world as world_module
-from ewa_mcp.outdoor.env import StreetEnvironment
+from ewa_mcp.cli import main as cli_main
+from ewa_mcp.outdoor import release
+from ewa_mcp.outdoor.importer import ImportFormatError
 from ewa_mcp.outdoor.world import World
-from ewa_mcp.services import Services
 from ewa_mcp.taskmodel import Task
+from ewa_mcp.websites.map.places import WorldAdapter
 
-# Five panoramas along a short L-shaped walk near Madison Square (positions written for this test).
-ENV = {
-    "source": "40.74140-73.98940",
-    "target": "40.74188-73.98862",
-    "nodes": {
-        "40.74140-73.98940": {"pano_id": "pA", "lat": 40.74140, "lng": -73.98940,
-                              "links": {"40.74156-73.98929": 28.9}},
-        "40.74156-73.98929": {"pano_id": "pB", "lat": 40.74156, "lng": -73.98929,
-                              "links": {"40.74140-73.98940": 208.9, "40.74172-73.98918": 28.9}},
-        "40.74172-73.98918": {"pano_id": "pC", "lat": 40.74172, "lng": -73.98918,
-                              "links": {"40.74156-73.98929": 208.9, "40.74180-73.98890": 118.9,
-                                        "40.80000-73.90000": 10.0}},
-        "40.74180-73.98890": {"pano_id": "pD", "lat": 40.74180, "lng": -73.98890,
-                              "links": {"40.74172-73.98918": 298.9, "40.74188-73.98862": 118.9}},
-        "40.74188-73.98862": {"pano_id": "pE",
-                              "links": {"40.74180-73.98890": 298.9}},
-    },
-}
+from . import release_fixtures as fx
 
 
-def test_convert_builds_graph_and_task():
-    graph, task = importer.convert(ENV, "Madison demo 1")
-    assert graph["city"] == "import-madison-demo-1" and len(graph["nodes"]) == 5
-    assert len(graph["edges"]) == 4  # symmetric links merged; the link leaving the file is dropped
-    by_pano = {v: k for k, v in graph["fit"]["pano_ids"].items()}
-    assert set(by_pano) == {"pA", "pB", "pC", "pD", "pE"}
-    t = Task.model_validate(task)
-    assert t.start.embodied.node == by_pano["pA"] and t.start.embodied.heading == 0.0
-    # pE has no lat/lng fields: its position comes from the "lat-lng" key (western longitude).
-    e = next(n for n in graph["nodes"] if n[0] == t.embodied_goals[0].node)
-    assert e[1:] == [40.74188, -73.98862]
+def load_graph(result):
+    with gzip.open(result.graph_path, "rt", encoding="utf-8") as fh:
+        return json.load(fh)
 
 
-def test_bad_file_is_refused_with_a_reason():
-    with pytest.raises(importer.ImportFormatError, match="source"):
-        importer.convert({**ENV, "target": "nowhere"}, "x")
-    with pytest.raises(importer.ImportFormatError, match="no nodes"):
-        importer.convert({"source": "a", "target": "b"}, "x")
+def node_of(graph, original_key):
+    return next(n for n, keys in graph["fit"]["node_aliases"].items() if original_key in keys)
 
 
-@pytest.mark.anyio
-async def test_imported_environment_runs_in_the_street_environment(tmp_path, monkeypatch):
-    src = tmp_path / "env.json"
-    src.write_text(json.dumps({"madison": ENV}))
-    assert importer.main([str(src), "--data-dir", str(tmp_path / "graphs"), "--task-dir", str(tmp_path / "tasks")]) == 0
-    w = World(data_dirs=[tmp_path / "graphs"])
-    monkeypatch.setattr(world_module, "_world", w)
-    task = Task.model_validate(json.loads((tmp_path / "tasks" / "nav-import-madison.json").read_text()))
-    env = StreetEnvironment(episode=None, services=Services())
-    await env.reset(task, {"observation": "text"})
-    goal = task.embodied_goals[0].node
-    for node in w.directions(task.start.embodied.node, goal).nodes[1:]:
-        env.move(neighbour=node)
-    env.stop()
-    state = await env.final_state()
-    assert state["node"] == goal and state["stopped"] and len(state["path"]) == 5
+def test_list_file_imports_each_environment_or_says_why(tmp_path):
+    result = release.import_file(fx.write_release(tmp_path / "src"), tmp_path / "out")
+    assert result.report.environments_read == 3
+    assert [t["id"] for t in result.tasks] == ["nav-import-navi-env-test-000"]
+    reasons = {s["environment"]: s["reason"] for s in result.report.skipped}
+    assert set(reasons) == {"1", "2"}
+    assert "same panorama" in reasons["1"] and "no walkable route" in reasons["2"]
+    task = Task.model_validate(json.loads(result.task_paths[0].read_text(encoding="utf-8")))
+    graph = load_graph(result)
+    assert task.start.embodied.node == node_of(graph, fx.K1)
+    assert task.embodied_goals[0].node == node_of(graph, fx.K5)
+    # the link to a panorama outside the environment is dropped, the one-way link is walkable
+    assert result.report.counts["links to panoramas outside their environment (dropped)"] == 1
+    assert result.report.counts["one-way links (walkable both ways here)"] >= 1
+    report = (tmp_path / "out" / "import-navi-env-test.import-report.txt").read_text(encoding="utf-8")
+    assert "environment 1:" in report and "environment 2:" in report
+
+
+def test_near_duplicate_panoramas_merge_and_keep_every_id(tmp_path):
+    result = release.import_file(fx.write_release(tmp_path / "src"), tmp_path / "out")
+    graph = load_graph(result)
+    merged = node_of(graph, fx.K2)
+    assert node_of(graph, fx.K2B) == merged
+    assert set(graph["fit"]["node_aliases"][merged]) == {fx.K2, fx.K2B}
+    assert set(graph["fit"]["pano_ids"][merged]) == {"pano-2", "pano-2b"}
+    # five walk panoramas (six, less the duplicate; the second environment reuses two) + two more
+    assert len(graph["nodes"]) == 5 + 2
+    assert any(m["node"] == merged and 0 < m["spread_m"] < 1 for m in result.report.merged)
+
+
+def test_street_names_come_from_link_text(tmp_path):
+    result = release.import_file(fx.write_release(tmp_path / "src"), tmp_path / "out")
+    graph = load_graph(result)
+    assert {fx.SENORA, fx.BEACON} <= set(graph["streets"])
+    world = World(data_dirs=[tmp_path / "out" / "streets"])
+    links = world.neighbours(node_of(graph, fx.K3))
+    assert sorted(link.street for link in links) == [fx.BEACON, fx.SENORA]
+    steps = world.directions(node_of(graph, fx.K1), node_of(graph, fx.K5)).steps
+    assert [s.street for s in steps[:2]] == [fx.SENORA, fx.BEACON] and steps[1].maneuver == "turn right"
+
+
+def test_mapping_and_single_environment_files_and_older_field_names(tmp_path):
+    legacy = fx.legacy_shape()
+    (tmp_path / "one.json").write_text(json.dumps(legacy, ensure_ascii=False), encoding="utf-8")
+    (tmp_path / "named.json").write_text(json.dumps({"walk": fx.WALK, "cut": fx.CUT}, ensure_ascii=False),
+                                         encoding="utf-8")
+    one = release.import_file(tmp_path / "one.json", tmp_path / "out")
+    named = release.import_file(tmp_path / "named.json", tmp_path / "out")
+    assert [t["id"] for t in one.tasks] == ["nav-import-one-one"]
+    assert [t["id"] for t in named.tasks] == ["nav-import-named-walk"]
+    assert [s["environment"] for s in named.report.skipped] == ["cut"]
+    graph = load_graph(one)
+    assert {fx.SENORA, fx.BEACON} <= set(graph["streets"])
+    assert "pano-2b" in graph["fit"]["pano_ids"][node_of(graph, fx.K2)]
+
+
+def test_bad_files_are_refused_with_the_reason(tmp_path):
+    bad = tmp_path / "bad.json"
+    bad.write_text(json.dumps({"hello": 1}))
+    with pytest.raises(ImportFormatError, match="not a navigation environment file"):
+        release.import_file(bad, tmp_path / "out")
+    bad.write_text("version https://git-lfs.github.com/spec/v1\n")
+    with pytest.raises(ImportFormatError, match="LFS"):
+        release.import_file(bad, tmp_path / "out")
+    missing = tmp_path / "partial.json"
+    missing.write_text(json.dumps([{"source": "a", "target": "b", "graph": {}}, fx.WALK], ensure_ascii=False))
+    result = release.import_file(missing, tmp_path / "out")
+    assert "no panoramas" in result.report.skipped[0]["reason"] and len(result.tasks) == 1
+
+
+def test_without_annotations_places_are_named_after_the_route(tmp_path):
+    result = release.import_file(fx.write_release(tmp_path / "src"), tmp_path / "out")
+    task = result.tasks[0]
+    assert task["intent"].startswith('Starting at "Start of route 0 on Calle Señora", get walking directions')
+    assert '"End of route 0 on Beacon Row"' in task["intent"]
+    assert task["web_goals"] == [{"kind": "directions_shown", "origin": "place-import-navi-env-test-0000",
+                                  "destination": "place-import-navi-env-test-0001"}]
+    # the start is never closer than the goal's radius
+    goal = task["embodied_goals"][0]
+    assert 0 < goal["radius_m"] < task["metadata"]["start_goal_distance_m"]
+
+
+def test_annotations_name_the_places_and_set_the_direction(tmp_path):
+    result = release.import_file(fx.write_release(tmp_path / "src", annotations=True), tmp_path / "out")
+    assert result.annotations.name == "navi_anno_test.json"  # found beside the environments
+    task = result.tasks[0]
+    assert task["intent"] == ('Starting at "40 Beacon Row, New York, NY", get walking directions on the map site to '
+                              '"12 Harbor Lane, New York, NY", then walk there and stop when you arrive.')
+    graph = load_graph(result)
+    # the annotated start is the environment's target: the task walks target -> source
+    assert task["start"]["embodied"]["node"] == node_of(graph, fx.K5)
+    assert task["embodied_goals"][0]["node"] == node_of(graph, fx.K1)
+    assert task["metadata"]["reversed_to_match_annotation"] is True
+    # the map site resolves what the intent says to exactly the goal's places
+    resolver = WorldAdapter(World(data_dirs=[tmp_path / "out" / "streets"]))
+    assert resolver.resolve("40 Beacon Row, New York, NY").place.id == task["web_goals"][0]["origin"]
+    assert resolver.resolve("12 Harbor Lane, New York, NY").place.id == task["web_goals"][0]["destination"]
+    assert "from=40+Beacon+Row" in task["oracle"][0]["args"]["url"]
+
+
+def test_cli_imports_and_prints_counts(tmp_path, capsys):
+    src = fx.write_release(tmp_path / "src")
+    assert cli_main(["tasks", "import-ewa", str(src), "--out", str(tmp_path / "out"), "--annotations", "none"]) == 0
+    out = capsys.readouterr().out
+    counts = json.loads(next(line for line in out.splitlines() if line.startswith("{")))
+    assert counts["environments"] == 3 and counts["tasks"] == 1 and counts["skipped"] == 2
+    assert f"ewa-mcp eval --tasks-dir {tmp_path / 'out'}" in out
+    assert cli_main(["tasks", "validate", "--tasks", str(tmp_path / "out")]) == 0
+    assert cli_main(["tasks", "import-ewa", str(tmp_path / "nope.json"), "--out", str(tmp_path / "out")]) == 2
+
+
+def test_a_name_another_imported_file_uses_gets_the_file_name(tmp_path):
+    ann = tmp_path / "ann.json"
+    ann.write_text(json.dumps({"walk": fx.ANNOTATIONS[0]}))
+    for name in ("first", "second"):
+        (tmp_path / f"{name}.json").write_text(json.dumps({"walk": fx.WALK}, ensure_ascii=False), encoding="utf-8")
+    first = release.import_file(tmp_path / "first.json", tmp_path / "out", ann)
+    second = release.import_file(tmp_path / "second.json", tmp_path / "out", ann)
+    assert '"40 Beacon Row, New York, NY"' in first.tasks[0]["intent"]
+    assert '"40 Beacon Row, New York, NY (second)"' in second.tasks[0]["intent"]
+    resolver = WorldAdapter(World(data_dirs=[tmp_path / "out" / "streets"]))
+    for result in (first, second):
+        task = result.tasks[0]
+        start_name = task["intent"].split('"')[1]
+        assert resolver.resolve(start_name).place.id == task["web_goals"][0]["origin"]
+        assert task["web_goals"][0]["origin"].startswith(f"place-{result.city}-")
