@@ -703,11 +703,38 @@ class BrowserEnvironment(Environment):
                     target = self.policy.resolve(url)  # type: ignore[union-attr]
                 except BlockedUrlError as exc:
                     raise EnvError(f"browser_new_tab refused {url!r}: {exc}") from exc
+            previous = self.active
             tab = await self._open_tab()
-            await tab.page.bring_to_front()
-            await self._goto(tab, target)
+            try:
+                await tab.page.bring_to_front()
+                await self._goto(tab, target)
+                refused = self._blocked_nav
+                if refused is None and target != "about:blank" and tab.page.url.startswith("chrome-error:"):
+                    refused = target
+                if refused is not None:  # e.g. a redirect off-site: no tab shows a page it did not open
+                    self._blocked_nav = None
+                    self._notices = [n for n in self._notices if refused[:120] not in n]
+                    raise EnvError(f"browser_new_tab: {target[:200]} led to {refused[:200]}, which is refused: only "
+                                   "the embedded sites are reachable ("
+                                   f"{self.policy.describe_allowed() if self.policy else ''}); no tab was opened")
+            except BaseException:
+                await self._discard_tab(tab, previous)
+                raise
 
         return await self._perform("browser_new_tab", act, settle=False)
+
+    async def _discard_tab(self, tab: Tab, previous: int) -> None:
+        """Close a tab this action opened and make ``previous`` current again."""
+        tab.closing = True
+        if tab in self.tabs:
+            self.tabs.remove(tab)
+        self.active = min(previous, len(self.tabs) - 1)
+        try:
+            await tab.page.close()
+            if self.tabs:
+                await self.tabs[self.active].page.bring_to_front()
+        except PlaywrightError:
+            pass  # the browser is gone; the next call restores it
 
     async def close_tab(self) -> Observation:
         async def act(tab: Tab) -> None:
