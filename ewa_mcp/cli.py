@@ -31,17 +31,9 @@ def cmd_serve(args: argparse.Namespace) -> int:
     if args.transport == "stdio":
         mcp.run("stdio")
     else:
-        import anyio
-        import uvicorn
+        from .http_serve import serve_http
 
-        if args.host not in ("127.0.0.1", "localhost", "::1") and not args.allow_remote:
-            print(f"refusing to listen on {args.host}: the server drives a browser and records runs; "
-                  "pass --allow-remote if you really mean it", file=sys.stderr)
-            return 2
-        app = mcp.streamable_http_app()
-        print(f"MCP endpoint: http://{args.host}:{args.port}/mcp", file=sys.stderr)
-        config = uvicorn.Config(app, host=args.host, port=args.port, log_level="warning")
-        anyio.run(uvicorn.Server(config).serve)
+        return serve_http(mcp, args.host, args.port, allow_remote=args.allow_remote, token=args.token)
     return 0
 
 
@@ -172,7 +164,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--transport", choices=["stdio", "http"], default="stdio")
     p.add_argument("--host", default="127.0.0.1")
     p.add_argument("--port", type=int, default=8765)
-    p.add_argument("--allow-remote", action="store_true", help="allow a non-loopback --host")
+    p.add_argument("--allow-remote", action="store_true",
+                   help="allow a non-loopback --host; every request then needs a bearer token")
+    p.add_argument("--token", help="bearer token every HTTP request must carry (default: EWA_MCP_TOKEN; past "
+                   "loopback one is generated and printed when neither is set)")
     p.add_argument("--tasks", action="append", metavar="DIR", help="task directory (repeatable; default: tasks/)")
     p.add_argument("--run-dir", metavar="DIR", help="where episodes are recorded (default: runs/<new id>)")
     p.add_argument("-v", "--verbose", action="store_true")

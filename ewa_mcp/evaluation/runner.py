@@ -80,7 +80,8 @@ async def connect(transport: str, task_dirs: list[Path], run_dir: Path):
     elif transport == "http":
         port = _free_port()
         proc = subprocess.Popen([sys.executable, *_server_args(task_dirs, run_dir), "--transport", "http",
-                                 "--port", str(port)], stderr=subprocess.DEVNULL)
+                                 "--port", str(port)], stderr=subprocess.DEVNULL,
+                                env={k: v for k, v in os.environ.items() if k != "EWA_MCP_TOKEN"})  # loopback: no token
         try:
             deadline = time.monotonic() + 60
             while True:

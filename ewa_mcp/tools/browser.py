@@ -39,6 +39,10 @@ Url = Annotated[
     ),
 ]
 Result = Annotated[CallToolResult, StepOutput]
+# What every action returns, by the episode's observation mode (the start_episode option).
+OBSERVES = (" Returns the page afterwards as the episode's observation mode shows it: text mode the accessibility "
+            "tree; vision mode a Set-of-Marks screenshot plus the list of its marked elements; both mode the tree "
+            "and the screenshot.")
 READ_ONLY = ToolAnnotations(read_only_hint=True, open_world_hint=False)
 ACTION = ToolAnnotations(read_only_hint=False, destructive_hint=False, open_world_hint=False)
 
@@ -58,13 +62,13 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
                   **call_kwargs: Any) -> CallToolResult:
         return await env_action(episodes, episode_id, tool, args, "web", _method(method, *call_args, **call_kwargs))
 
-    @mcp.tool(description="Click an element of the current page.", annotations=ACTION)
+    @mcp.tool(description="Click an element of the current page." + OBSERVES, annotations=ACTION)
     async def browser_click(episode_id: EpisodeId, element: Element) -> Result:
         return await act(episode_id, "browser_click", {"element": element}, "click", element)
 
     @mcp.tool(
         description="Type text into a text field (replacing its content), optionally pressing Enter after. "
-        "For a drop-down (combobox), the text chooses the option with that label.",
+        "For a drop-down (combobox), the text chooses the option with that label." + OBSERVES,
         annotations=ACTION,
     )
     async def browser_type(
@@ -76,50 +80,51 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         args = {"element": element, "text": text, "press_enter": press_enter}
         return await act(episode_id, "browser_type", args, "type", element, text, press_enter)
 
-    @mcp.tool(description="Move the mouse over an element (opens hover menus).", annotations=ACTION)
+    @mcp.tool(description="Move the mouse over an element (opens hover menus)." + OBSERVES, annotations=ACTION)
     async def browser_hover(episode_id: EpisodeId, element: Element) -> Result:
         return await act(episode_id, "browser_hover", {"element": element}, "hover", element)
 
     @mcp.tool(description="Press a key or key combination on the focused element, e.g. Enter, Tab, ArrowDown, "
-              "Escape, Control+a.", annotations=ACTION)
+              "Escape, Control+a." + OBSERVES, annotations=ACTION)
     async def browser_press(
         episode_id: EpisodeId, keys: Annotated[str, Field(min_length=1, max_length=100)]
     ) -> Result:
         return await act(episode_id, "browser_press", {"keys": keys}, "press", keys)
 
-    @mcp.tool(description="Scroll the page by most of a screen in a direction.", annotations=ACTION)
+    @mcp.tool(description="Scroll the page by most of a screen in a direction." + OBSERVES, annotations=ACTION)
     async def browser_scroll(episode_id: EpisodeId, direction: Literal["up", "down", "left", "right"]) -> Result:
         return await act(episode_id, "browser_scroll", {"direction": direction}, "scroll", direction)
 
-    @mcp.tool(description="Open a new tab (blank, or at a URL of an embedded site) and make it current.",
+    @mcp.tool(description="Open a new tab (blank, or at a URL of an embedded site) and make it current." + OBSERVES,
               annotations=ACTION)
     async def browser_new_tab(episode_id: EpisodeId, url: Url | None = None) -> Result:
         return await act(episode_id, "browser_new_tab", {"url": url}, "new_tab", url)
 
-    @mcp.tool(description="Close the current tab; the tab to its left becomes current.", annotations=ACTION)
+    @mcp.tool(description="Close the current tab; the tab to its left becomes current." + OBSERVES, annotations=ACTION)
     async def browser_close_tab(episode_id: EpisodeId) -> Result:
         return await act(episode_id, "browser_close_tab", {}, "close_tab")
 
-    @mcp.tool(description="Make the tab with this index (from the observation's tab list, 0-based) current.",
+    @mcp.tool(description="Make the tab with this index (from the observation's tab list, 0-based) current." + OBSERVES,
               annotations=ACTION)
     async def browser_tab_focus(episode_id: EpisodeId, index: Annotated[int, Field(ge=0, le=100)]) -> Result:
         return await act(episode_id, "browser_tab_focus", {"index": index}, "tab_focus", index)
 
-    @mcp.tool(description="Open a URL of an embedded site in the current tab.", annotations=ACTION)
+    @mcp.tool(description="Open a URL of an embedded site in the current tab." + OBSERVES, annotations=ACTION)
     async def browser_goto(episode_id: EpisodeId, url: Url) -> Result:
         return await act(episode_id, "browser_goto", {"url": url}, "goto", url)
 
-    @mcp.tool(description="Go back to the previous page of the current tab.", annotations=ACTION)
+    @mcp.tool(description="Go back to the previous page of the current tab." + OBSERVES, annotations=ACTION)
     async def browser_go_back(episode_id: EpisodeId) -> Result:
         return await act(episode_id, "browser_go_back", {}, "go_back")
 
-    @mcp.tool(description="Go forward to the next page of the current tab (after going back).", annotations=ACTION)
+    @mcp.tool(description="Go forward to the next page of the current tab (after going back)." + OBSERVES, annotations=ACTION)
     async def browser_go_forward(episode_id: EpisodeId) -> Result:
         return await act(episode_id, "browser_go_forward", {}, "go_forward")
 
     @mcp.tool(
-        description="Show the current page's accessibility tree again (counts as a step, like every call); viewport_only limits "
-        "it to what is on screen, max_chars sets the size budget.",
+        description="The current page's accessibility tree as text, without acting (it counts as a step, like every "
+        "call). It is always the tree and never an image, whatever the observation mode (browser_screenshot gives "
+        "the image). viewport_only limits it to what is on screen; max_chars sets the size budget.",
         annotations=READ_ONLY,
     )
     async def browser_snapshot(
@@ -131,8 +136,10 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         return await act(episode_id, "browser_snapshot", args, "snapshot", viewport_only, max_chars)
 
     @mcp.tool(
-        description="A screenshot of the current tab with each interactive element boxed and labelled by its id "
-        "(Set-of-Marks); counts as a step, like every call.",
+        description="A screenshot of the current tab's viewport with each interactive element boxed and labelled by "
+        "its id (Set-of-Marks), plus the list of marked elements as text; it counts as a step, like every call. It "
+        "is always the image and never the accessibility tree, whatever the observation mode (browser_snapshot "
+        "gives the tree).",
         annotations=READ_ONLY,
     )
     async def browser_screenshot(episode_id: EpisodeId) -> Result:

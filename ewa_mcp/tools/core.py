@@ -77,6 +77,15 @@ def public_task(task: Any) -> dict[str, Any]:
     }
 
 
+def page_span(offset: int, shown: int, total: int) -> str:
+    """Which tasks a list_tasks page holds, by 0-based position like its ``offset`` argument."""
+    if shown == 0:
+        return f"none at offset {offset} (offsets run 0–{total - 1})" if total else "none"
+    if shown == 1:
+        return f"showing 1 task, at offset {offset} (0-based)"
+    return f"showing {shown} tasks, offsets {offset}–{offset + shown - 1} (0-based)"
+
+
 async def _observe(episode: Any) -> Observation:
     env = episode.environments.get(episode.active)
     if env is None:
@@ -90,7 +99,8 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         domain: Literal["cooking", "navigation", "shopping", "traveling", "geolocation", "demo"] | None = None,
         difficulty: Literal["easy", "medium", "hard"] | None = None,
         limit: Annotated[int, Field(ge=1, le=500)] = 20,
-        offset: Annotated[int, Field(ge=0)] = 0,
+        offset: Annotated[int, Field(ge=0, description="how many tasks to skip: 0-based position of the first "
+                                     "task listed (offset=0 starts at the first task)")] = 0,
     ) -> Annotated[CallToolResult, TaskList]:
         tasks = sorted(episodes.tasks.all(domain), key=lambda t: t.id)
         if difficulty is not None:
@@ -104,7 +114,8 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
             offset=offset,
             next_offset=nxt,
         )
-        lines = [f"{len(tasks)} tasks" + (f" in {domain}" if domain else "") + f"; showing {offset}–{offset + len(page)}:"]
+        lines = [f"{len(tasks)} tasks" + (f" in {domain}" if domain else "") + "; " + page_span(offset, len(page),
+                                                                                             len(tasks)) + ":"]
         lines += [f"- {t.id} [{t.domain}, {t.difficulty}] {t.intent}" for t in page]
         if nxt is not None:
             lines.append(f"(more: offset={nxt})")

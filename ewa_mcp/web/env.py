@@ -13,7 +13,7 @@ import asyncio
 import base64
 import json
 import time
-from typing import Any, ClassVar
+from typing import Any, ClassVar, Literal
 from urllib.parse import urldefrag
 
 from playwright.async_api import Error as PlaywrightError
@@ -459,7 +459,7 @@ class BrowserEnvironment(Environment):
             await self._refuse_navigation(action_name, tab)
         # Most actions leave nothing running, so the snapshot is taken while the page is asked
         # whether it has work in flight; it is taken again only when the page had some.
-        want_image = self.options.get("observation", "text") in ("vision", "both")
+        want_image = self._mode() in ("vision", "both")
         idle, collected = await asyncio.gather(
             tab.activity.idle(mark, deadline, lambda expression: self._main_world(tab, expression), PAGE_INFO_JS),
             self._collect(tab, want_image, facts=False),  # the idle answer brings the facts
@@ -703,11 +703,38 @@ class BrowserEnvironment(Environment):
                     target = self.policy.resolve(url)  # type: ignore[union-attr]
                 except BlockedUrlError as exc:
                     raise EnvError(f"browser_new_tab refused {url!r}: {exc}") from exc
+            previous = self.active
             tab = await self._open_tab()
-            await tab.page.bring_to_front()
-            await self._goto(tab, target)
+            try:
+                await tab.page.bring_to_front()
+                await self._goto(tab, target)
+                refused = self._blocked_nav
+                if refused is None and target != "about:blank" and tab.page.url.startswith("chrome-error:"):
+                    refused = target
+                if refused is not None:  # e.g. a redirect off-site: no tab shows a page it did not open
+                    self._blocked_nav = None
+                    self._notices = [n for n in self._notices if refused[:120] not in n]
+                    raise EnvError(f"browser_new_tab: {target[:200]} led to {refused[:200]}, which is refused: only "
+                                   "the embedded sites are reachable ("
+                                   f"{self.policy.describe_allowed() if self.policy else ''}); no tab was opened")
+            except BaseException:
+                await self._discard_tab(tab, previous)
+                raise
 
         return await self._perform("browser_new_tab", act, settle=False)
+
+    async def _discard_tab(self, tab: Tab, previous: int) -> None:
+        """Close a tab this action opened and make ``previous`` current again."""
+        tab.closing = True
+        if tab in self.tabs:
+            self.tabs.remove(tab)
+        self.active = min(previous, len(self.tabs) - 1)
+        try:
+            await tab.page.close()
+            if self.tabs:
+                await self.tabs[self.active].page.bring_to_front()
+        except PlaywrightError:
+            pass  # the browser is gone; the next call restores it
 
     async def close_tab(self) -> Observation:
         async def act(tab: Tab) -> None:
@@ -733,12 +760,14 @@ class BrowserEnvironment(Environment):
         return await self._perform("browser_tab_focus", act, settle=False)
 
     async def snapshot(self, viewport_only: bool | None = None, max_chars: int | None = None) -> Observation:
+        """The accessibility tree as text, never an image, whatever the observation mode."""
         await self._ensure_alive()
-        return await self._observe(viewport_only=viewport_only, max_chars=max_chars)
+        return await self._observe(viewport_only=viewport_only, max_chars=max_chars, view="tree")
 
     async def screenshot(self) -> Observation:
+        """The Set-of-Marks screenshot and the list of marked elements, whatever the observation mode."""
         await self._ensure_alive()
-        return await self._observe(image=True)
+        return await self._observe(view="screenshot")
 
     # ------------------------------------------------------------ observing
     async def _snapshot(self, tab: Tab, boxes: bool = False, facts: bool = True) -> Any:
@@ -801,16 +830,26 @@ class BrowserEnvironment(Environment):
         except PlaywrightError:
             pass
 
+    def _mode(self) -> str:
+        """The episode's observation mode: text, vision or both."""
+        return str(self.options.get("observation") or "text")
+
     async def _observe(self, *, viewport_only: bool | None = None, max_chars: int | None = None,
-                       image: bool = False) -> Observation:
+                       view: Literal["mode", "tree", "screenshot"] = "mode") -> Observation:
+        """``view`` "mode": what the observation mode shows (text: tree; vision: screenshot and its
+        marks; both: tree and screenshot); "tree" and "screenshot": that alone, in any mode."""
         tab = self._tab()
-        want_image = image or self.options.get("observation", "text") in ("vision", "both")
+        if view == "mode":
+            want_image = self._mode() in ("vision", "both")
+            body: Literal["tree", "marks"] = "marks" if self._mode() == "vision" else "tree"
+        else:
+            want_image = view == "screenshot"
+            body = "marks" if want_image else "tree"
         if viewport_only and not want_image:
             collected = (await self._snapshot(tab, boxes=True), b"")
         else:
             collected = await self._collect(tab, want_image)
-        return await self._present(tab, collected, viewport_only=viewport_only, max_chars=max_chars,
-                                   image_requested=image)
+        return await self._present(tab, collected, viewport_only=viewport_only, max_chars=max_chars, body=body)
 
     async def _collect(self, tab: Tab, want_image: bool, facts: bool = True) -> tuple[Any, bytes]:
         """The snapshot (with the page facts unless ``facts`` is false) and, when wanted, the
@@ -834,8 +873,11 @@ class BrowserEnvironment(Environment):
         return bool(self.options.get("web_viewport_only", self.config.viewport_only))
 
     async def _present(self, tab: Tab, collected: tuple[list[Any], bytes], *, viewport_only: bool | None = None,
-                       max_chars: int | None = None, image_requested: bool = False) -> Observation:
+                       max_chars: int | None = None, body: Literal["tree", "marks"] | None = None) -> Observation:
         facts, png = collected
+        # The page now shown names the tab: after a navigation the title the snapshot kept may be
+        # the previous page's (an observation after an action reads the facts separately).
+        tab.last_title = facts[0]
         viewport_only = self._viewport_only(viewport_only)
         budget = int(max_chars or self.options.get("web_max_chars") or self.config.max_chars)
         rendered = render_tree(tab.roots, lambda n: tab.ref_ids[n.ref], title=facts[0], viewport=(facts[3], facts[4]),
@@ -847,8 +889,9 @@ class BrowserEnvironment(Environment):
             lines.append(TabLine(i, titles[i], url, self._site_url(url), i == self.active))
         notices, self._notices = self._notices, []
         return build_observation(tabs=lines, facts=facts, url=tab.page.url, site_url=self._site_url(tab.page.url),
-                                 rendered=rendered, notices=notices, mode=self.options.get("observation", "text"),
-                                 viewport_only=viewport_only, budget=budget, png=png, marks_only=image_requested)
+                                 rendered=rendered, notices=notices,
+                                 body=body or ("marks" if self._mode() == "vision" else "tree"),
+                                 viewport_only=viewport_only, budget=budget, png=png)
 
     async def _title_of(self, tab: Tab) -> str:
         if tab is self._tab() or tab.page.is_closed():

@@ -1,5 +1,5 @@
-"""The browser observation an agent reads: tabs, URL, scroll position, notices, then the
-accessibility tree (or, with an image, the list of what its marks label)."""
+"""The browser observation an agent reads: tabs, URL, scroll position, notices, then either the
+accessibility tree or the list of what the screenshot's marks label (``body``)."""
 
 from __future__ import annotations
 
@@ -37,12 +37,13 @@ def build_observation(
     site_url: str | None,
     rendered: RenderedTree,
     notices: list[str],
-    mode: Literal["text", "vision", "both"] | str,
+    body: Literal["tree", "marks"],
     viewport_only: bool,
     budget: int,
     png: bytes = b"",
-    marks_only: bool = False,
 ) -> Observation:
+    """``body`` "tree": the accessibility tree as text (and in ``data["tree"]``); "marks": the list
+    of marked elements that label ``png`` (``data["tree"]`` is None: the tree is not shown)."""
     title, sx, sy, vw, vh, page_w, page_h = facts
     header = [f"Tab {t.index}{' (current)' if t.active else ''}: {t.title or '(untitled)'} — {t.site_url or t.url}"
               for t in tabs]
@@ -52,14 +53,14 @@ def build_observation(
                       + (f", x {sx}–{sx + vw} of {page_w} px" if page_w > vw else ""))
     if notices:
         header.append("Notices:\n" + "\n".join(f"- {n}" for n in notices))
-    if marks_only or mode == "vision":  # the image carries the page: list what its labels name
-        body = "Marked elements (see the screenshot):\n" + "\n".join(
+    if body == "marks":  # the image carries the page: list what its labels name
+        shown = "Marked elements (see the screenshot):\n" + "\n".join(
             f"[{m.id}] {m.role} '{m.name}'" for m in rendered.marks)
     else:
         scope = "visible part of the page" if viewport_only else "whole page"
-        body = f"Accessibility tree ({scope}):\n{rendered.text}"
+        shown = f"Accessibility tree ({scope}):\n{rendered.text}"
         if rendered.truncated:
-            body += (f"\n[truncated: {rendered.lines} of {rendered.total_lines} lines shown, limit {budget} "
+            shown += (f"\n[truncated: {rendered.lines} of {rendered.total_lines} lines shown, limit {budget} "
                      "characters; scroll and use browser_snapshot(viewport_only=true), or ask for a larger max_chars]")
     data = {
         "kind": "browser",
@@ -71,11 +72,11 @@ def build_observation(
         "scroll": {"x": sx, "y": sy, "viewport_width": vw, "viewport_height": vh,
                    "page_width": page_w, "page_height": page_h},
         "viewport_only": viewport_only,
-        "tree": rendered.text,
-        "truncated": rendered.truncated,
+        "tree": rendered.text if body == "tree" else None,
+        "truncated": rendered.truncated and body == "tree",
         "lines_shown": rendered.lines,
         "lines_total": rendered.total_lines,
         "marks": len(rendered.marks),
         "notices": notices,
     }
-    return Observation(text="\n".join(header) + "\n\n" + body, data=data, images=[png] if png else [])
+    return Observation(text="\n".join(header) + "\n\n" + shown, data=data, images=[png] if png else [])

@@ -63,6 +63,21 @@ async def test_list_tasks_pages_and_filters(server):
         assert r.is_error
 
 
+async def test_list_tasks_names_the_page_by_the_offsets_it_takes(server):
+    mcp, _, _ = server
+    async with Client(mcp) as client:
+        tools = {t.name: t for t in (await client.list_tools()).tools}
+        assert "0-based" in tools["list_tasks"].input_schema["properties"]["offset"]["description"]
+        r = await client.call_tool("list_tasks", {"limit": 5, "offset": 1})
+        lines = text_of(r).splitlines()
+        assert lines[0] == "3 tasks; showing 2 tasks, offsets 1–2 (0-based):"
+        assert [line.split()[1] for line in lines[1:]] == ["t-short", "t-web"]
+        r = await client.call_tool("list_tasks", {"limit": 5, "offset": 2})
+        assert text_of(r).splitlines()[0] == "3 tasks; showing 1 task, at offset 2 (0-based):"
+        r = await client.call_tool("list_tasks", {"offset": 7})
+        assert text_of(r) == "3 tasks; none at offset 7 (offsets run 0–2):"
+
+
 async def test_episode_lifecycle_and_records(server):
     mcp, _, run = server
     async with Client(mcp) as client:
