@@ -20,14 +20,31 @@ def _server_config(args: argparse.Namespace):
     )
 
 
-def cmd_serve(args: argparse.Namespace) -> int:
-    from .server import build_server
+def _task_dirs_or_error(given: list[str] | None) -> list[Path] | None:
+    """The task directories to use, or None after printing why there are none (the caller exits 2)."""
+    from .paths import TaskStoreMissing, check_task_dirs, tasks_dir
 
+    dirs = [Path(p) for p in given] if given else [tasks_dir()]
+    try:
+        check_task_dirs(dirs)
+    except TaskStoreMissing as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return None
+    return dirs
+
+
+def cmd_serve(args: argparse.Namespace) -> int:
     # stdout carries the stdio protocol: every log line goes to stderr.
     logging.basicConfig(level=logging.WARNING if not args.verbose else logging.INFO, stream=sys.stderr)
+    task_dirs = _task_dirs_or_error(getattr(args, "tasks", None))
+    if task_dirs is None:
+        return 2
+    from .server import build_server
+
+    # The task files are parsed on first use, not here: a client's `initialize` is answered at once.
     mcp, episodes = build_server(_server_config(args))
-    print(f"ewa-mcp {__version__}: {len(episodes.tasks)} tasks; episodes recorded under {episodes.run_dir}",
-          file=sys.stderr)
+    print(f"ewa-mcp {__version__}: tasks from {', '.join(map(str, task_dirs))}; "
+          f"episodes recorded under {episodes.run_dir}", file=sys.stderr)
     if args.transport == "stdio":
         mcp.run("stdio")
     else:
@@ -56,7 +73,7 @@ def cmd_sites(args: argparse.Namespace) -> int:
 
 
 def cmd_tasks(args: argparse.Namespace) -> int:
-    from .paths import tasks_dir
+    from .paths import generated_tasks_dir
     from .taskmodel import TaskStore, export_json_schema
 
     if args.action == "schema":
@@ -75,9 +92,26 @@ def cmd_tasks(args: argparse.Namespace) -> int:
     if args.paths:
         print(f"error: tasks {args.action} takes no PATH arguments", file=sys.stderr)
         return 2
-    roots = [Path(p) for p in args.tasks] if args.tasks else [tasks_dir()]
+    if args.action == "generate":
+        from .taskgen import generate_all
+
+        out = Path(args.output) if args.output else generated_tasks_dir()
+        counts = generate_all(out, domains=args.domain)
+        print(json.dumps(counts))
+        print(f"wrote {out}" + ("" if args.output or out != Path.cwd() / "tasks" else
+                                "; use it with --tasks ./tasks or EWA_TASKS_DIR=./tasks"), file=sys.stderr)
+        return 0
+    roots = _task_dirs_or_error(args.tasks)
+    if roots is None:
+        return 2
     store = TaskStore(roots)
     tasks = store.all()
+    if not tasks and args.action == "list":
+        for err in store.errors[:10]:
+            print(f"error: {err}", file=sys.stderr)
+        print(f"error: no valid task in {', '.join(map(str, roots))}; fix the files named above or "
+              "regenerate them with `ewa-mcp tasks generate -o DIR`", file=sys.stderr)
+        return 2
     if args.action == "validate":
         for err in store.errors:
             print(f"error: {err}", file=sys.stderr)
@@ -86,12 +120,6 @@ def cmd_tasks(args: argparse.Namespace) -> int:
             counts[t.domain] = counts.get(t.domain, 0) + 1
         print(json.dumps({"tasks": len(tasks), "by_domain": counts, "errors": len(store.errors)}))
         return 1 if store.errors else 0
-    if args.action == "generate":
-        from .taskgen import generate_all
-
-        counts = generate_all(Path(args.output) if args.output else tasks_dir(), domains=args.domain)
-        print(json.dumps(counts))
-        return 0
     for t in sorted(tasks, key=lambda t: t.id):
         if args.domain and t.domain not in args.domain:
             continue
@@ -105,6 +133,8 @@ def cmd_eval(args: argparse.Namespace) -> int:
     from .graders import grade_run, render_report
     from .taskmodel import TaskStore
 
+    if _task_dirs_or_error(args.tasks_dir) is None:
+        return 2
     task_dirs = task_dirs_from(args.tasks_dir)
     try:
         if args.agent == "replay":
@@ -135,6 +165,8 @@ def cmd_play(args: argparse.Namespace) -> int:
     from .graders import grade_run, render_report
     from .taskmodel import TaskStore
 
+    if _task_dirs_or_error(args.tasks_dir) is None:
+        return 2
     task_dirs = task_dirs_from(args.tasks_dir)
     task = TaskStore(task_dirs).get(args.task_id)
     if task is None:

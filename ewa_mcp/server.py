@@ -18,6 +18,7 @@ from . import __version__, registry
 from .episodes import EpisodeManager
 from .paths import runs_dir, tasks_dir
 from .records import new_run_id
+from .schemas import make_portable
 from .services import Services
 from .taskmodel import TaskStore
 
@@ -89,4 +90,5 @@ def build_server(config: ServerConfig | None = None) -> tuple[MCPServer, Episode
     mcp.episodes = episodes
     for module_name in registry.TOOL_GROUPS:
         importlib.import_module(module_name).register(mcp, episodes)
+    make_portable(mcp)  # no $ref/$defs, closed argument objects: every client's converter accepts them
     return mcp, episodes

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from typing import Annotated, Any, Literal
+from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 from mcp.server.mcpserver import MCPServer
 from mcp.server.mcpserver.exceptions import ToolError
@@ -12,9 +12,10 @@ from pydantic import BaseModel, Field
 
 from ..environment import EnvError, Observation
 from ..episodes import EpisodeManager
-from ..geo.env import GeoEnvironment
-from ..geo.names import CONTINENTS, country_suggestions, resolve_continent, resolve_country
 from ..response import StepOutput, env_action, footer, tool_result
+
+if TYPE_CHECKING:  # imported on first use: the server starts without loading the gazetteer
+    from ..geo.env import GeoEnvironment
 
 EpisodeId = Annotated[str, Field(description="the id start_episode returned", min_length=1, max_length=64)]
 
@@ -28,6 +29,8 @@ class SubmissionOutput(BaseModel):
 
 
 def _geo(env: Any) -> GeoEnvironment:
+    from ..geo.env import GeoEnvironment
+
     if not isinstance(env, GeoEnvironment):
         raise EnvError(f"this tool works in geolocation tasks only; this episode's embodied environment is "
                        f"{getattr(env, 'name', type(env).__name__)}")
@@ -36,6 +39,8 @@ def _geo(env: Any) -> GeoEnvironment:
 
 def validate_submission(lat: float, lng: float, continent: str | None, country: str | None) -> str | None:
     """The problem with a submission (and how to fix it), or None when it is valid."""
+    from ..geo.names import CONTINENTS, country_suggestions, resolve_continent, resolve_country
+
     if not (isinstance(lat, int | float) and math.isfinite(lat) and -90 <= lat <= 90):
         return (f"lat={lat!r} is out of range: latitude must be a number from -90 (south) to 90 (north) in decimal "
                 "degrees")

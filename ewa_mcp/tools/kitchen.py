@@ -7,7 +7,7 @@ while the web environment is active and records it in the trajectory.
 from __future__ import annotations
 
 from collections.abc import Awaitable, Callable
-from typing import Annotated, Any, Literal
+from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 from mcp.server.mcpserver import MCPServer
 from mcp.server.mcpserver.exceptions import ResourceError
@@ -16,8 +16,10 @@ from pydantic import Field
 
 from ..environment import EnvError, Environment, Observation
 from ..episodes import EpisodeError, EpisodeManager
-from ..indoor.env import KitchenEnvironment
 from ..response import StepOutput, env_action
+
+if TYPE_CHECKING:  # imported on first use: the server starts without loading the simulator
+    from ..indoor.env import KitchenEnvironment
 from .core import EpisodeId
 
 ObjectRef = Annotated[
@@ -33,6 +35,8 @@ StepResult = Annotated[CallToolResult, StepOutput]
 
 
 def _kitchen(env: Environment) -> KitchenEnvironment:
+    from ..indoor.env import KitchenEnvironment
+
     if not isinstance(env, KitchenEnvironment):
         raise EnvError(f"this episode's embodied environment is a {type(env).name}, not a kitchen; "
                        "use that environment's tools")
@@ -111,6 +115,8 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         except EpisodeError as exc:
             raise ResourceError(str(exc)) from exc
         env = episode.environments.get("embodied")
+        from ..indoor.env import KitchenEnvironment
+
         if not isinstance(env, KitchenEnvironment) or env.session is None:
             raise ResourceError(f"episode {episode_id} has no running kitchen")
         return env.image_png()

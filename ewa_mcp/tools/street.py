@@ -3,7 +3,7 @@ episode protocol (active environment, step limit, trajectory record) applies to 
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import TYPE_CHECKING, Annotated, Literal
 
 from mcp.server.mcpserver import MCPServer
 from mcp_types import CallToolResult
@@ -11,13 +11,17 @@ from pydantic import Field
 
 from ..environment import EnvError, Observation
 from ..episodes import EpisodeManager
-from ..outdoor.env import StreetEnvironment
 from ..response import StepOutput, env_action
+
+if TYPE_CHECKING:  # imported on first use: the server starts without loading street graphs
+    from ..outdoor.env import StreetEnvironment
 
 EpisodeId = Annotated[str, Field(description="the id start_episode returned", min_length=1, max_length=64)]
 
 
 def _street(env: object) -> StreetEnvironment:
+    from ..outdoor.env import StreetEnvironment
+
     if not isinstance(env, StreetEnvironment):
         raise EnvError(f"this episode's embodied environment is {getattr(env, 'name', type(env).__name__)}, not the "
                        "street; use that environment's tools")

@@ -1,0 +1,346 @@
+"""Inspect AI tasks: evaluate any model on ewa-mcp with ``inspect eval ewa_mcp/<domain> --model ...``.
+
+Registered through the ``inspect_ai`` entry point in pyproject.toml, so after ``pip install ewa-mcp[inspect]``
+the tasks ``ewa_mcp/cooking``, ``ewa_mcp/navigation``, ``ewa_mcp/shopping``, ``ewa_mcp/traveling``,
+``ewa_mcp/geolocation`` and ``ewa_mcp/suite`` (every domain) run from any directory.
+
+- Dataset: the task store (sample id = task id); task parameters (``-T``) filter it: ``difficulty``
+  (easy/medium/hard, where tasks carry it), ``sample`` (N per domain, the same deterministic choice as
+  ``ewa-mcp eval --sample``), ``tasks`` (an id glob), ``tasks_dir``.
+- Solver: one ``ewa-mcp serve --transport http`` per eval process (one browser, one run directory); each
+  sample starts its episode through the MCP client and the model plays through Inspect's MCP tools, with
+  ``episode_id`` bound by the harness (removed from the schemas the model sees, as in evaluation/llm.py).
+  ``observation=vision|both`` sends the observation images to the model.
+- Scorer: the project's grader (``ewa_mcp.graders.grade_episode``) on the episode's record; the metrics are
+  Overall, Completion, Web-only and Embodied-only success, and the geolocation levels.
+"""
+
+from __future__ import annotations
+
+import atexit
+import subprocess
+import sys
+import time
+from pathlib import Path
+from typing import Any
+
+import anyio
+import httpx
+from inspect_ai import Task, task
+from inspect_ai.dataset import MemoryDataset, Sample
+from inspect_ai.model import ChatMessageSystem, ChatMessageUser, ContentImage, ContentText, execute_tools, get_model
+from inspect_ai.scorer import Score, Target, metric, scorer
+from inspect_ai.solver import Generate, TaskState, solver
+from inspect_ai.tool import ToolDef, mcp_server_http, mcp_tools
+from mcp import Client
+
+from .evaluation.llm import HIDDEN_TOOLS, NUDGE, SYSTEM_PROMPT
+from .evaluation.runner import EvalError, _free_port, select_tasks
+from .paths import TaskStoreMissing, check_task_dirs, runs_dir  # noqa: F401 (re-exported)
+from .paths import tasks_dir as default_tasks_dir
+from .records import new_run_id
+from .taskmodel import TaskStore
+
+DOMAINS = ("cooking", "navigation", "shopping", "traveling", "geolocation")
+GEO_LEVELS = ("continent", "country", "city", "street")
+
+
+# ---------------------------------------------------------------- dataset
+def ewa_dataset(domains: list[str] | None = None, difficulty: str | None = None, sample: int | None = None,
+                tasks: str | None = None, tasks_dir_: str | None = None) -> MemoryDataset:
+    """The task store as an Inspect dataset: one sample per task, id = task id, metadata = domain etc."""
+    dirs = [Path(tasks_dir_)] if tasks_dir_ else [default_tasks_dir()]
+    check_task_dirs(dirs)
+    store = TaskStore(dirs)
+    chosen = select_tasks(store, [tasks] if tasks else None, None, domains)
+    if difficulty:
+        wanted = {d.strip() for d in difficulty.split(",")}
+        chosen = [t for t in chosen if (getattr(t, "difficulty", None) or t.metadata.get("difficulty")) in wanted]
+        if not chosen:
+            raise EvalError(f"no task has difficulty {difficulty!r}; use easy, medium or hard (tasks without a "
+                            "difficulty field are never selected by it)")
+    if sample:
+        chosen = select_tasks(TaskStore(dirs), [t.id for t in chosen], sample, domains)
+    return MemoryDataset(
+        [Sample(id=t.id, input=t.intent,
+                metadata={"domain": t.domain, "step_limit": t.step_limit,
+                          "difficulty": getattr(t, "difficulty", None) or t.metadata.get("difficulty")})
+         for t in chosen],
+        name="ewa-mcp" + (f"-{domains[0]}" if domains and len(domains) == 1 else ""),
+    )
+
+
+# ---------------------------------------------------------------- the MCP server of this eval
+class _Server:
+    """One ``ewa-mcp serve --transport http`` per (run directory, task directories), stopped at exit."""
+
+    running: dict[tuple[str, str], "_Server"] = {}
+    lock = anyio.Lock()
+
+    def __init__(self, run_dir: Path, task_dirs: list[Path]):
+        self.port = _free_port()
+        self.url = f"http://127.0.0.1:{self.port}/mcp"
+        args = [sys.executable, "-m", "ewa_mcp", "serve", "--transport", "http", "--port", str(self.port),
+                "--run-dir", str(run_dir)]
+        for d in task_dirs:
+            args += ["--tasks", str(d)]
+        self.proc = subprocess.Popen(args, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL)
+        atexit.register(self.stop)
+
+    def wait_ready(self, timeout: float = 120) -> None:
+        deadline = time.monotonic() + timeout
+        while True:
+            try:
+                httpx.get(self.url, timeout=1)
+                return
+            except httpx.TransportError:
+                if self.proc.poll() is not None or time.monotonic() > deadline:
+                    raise EvalError("the ewa-mcp HTTP server did not start; run `ewa-mcp serve --transport http` "
+                                    "by hand to see why") from None
+                time.sleep(0.1)
+
+    def stop(self) -> None:
+        if self.proc.poll() is None:
+            self.proc.terminate()
+            try:
+                self.proc.wait(timeout=20)
+            except subprocess.TimeoutExpired:
+                self.proc.kill()
+
+    @classmethod
+    async def get(cls, run_dir: Path, task_dirs: list[Path]) -> "_Server":
+        key = (str(run_dir), "|".join(map(str, task_dirs)))
+        async with cls.lock:
+            server = cls.running.get(key)
+            if server is None or server.proc.poll() is not None:
+                server = cls(run_dir, task_dirs)
+                await anyio.to_thread.run_sync(server.wait_ready)
+                cls.running[key] = server
+        return server
+
+
+def _bind_episode(tool: Any, episode_id: str) -> Any:
+    """The MCP tool with ``episode_id`` filled in by the harness and removed from what the model sees."""
+    td = ToolDef(tool)
+    params = td.parameters.model_copy(deep=True)
+    params.properties.pop("episode_id", None)
+    params.required = [r for r in params.required if r != "episode_id"]
+
+    async def execute(**kwargs: Any) -> Any:
+        return await td.tool(episode_id=episode_id, **kwargs)
+
+    return ToolDef(execute, name=td.name, description=td.description, parameters=params).as_tool()
+
+
+def _first_message(task_id: str, start: Any, send_images: bool) -> ChatMessageUser:
+    texts = [getattr(c, "text", "") for c in start.content if getattr(c, "type", "") == "text"]
+    content: list[Any] = [ContentText(text=f"Task id: {task_id}\n" + "\n".join(texts))]
+    if send_images:
+        content += [ContentImage(image=f"data:{c.mime_type};base64,{c.data}")
+                    for c in start.content if getattr(c, "type", "") == "image"]
+    return ChatMessageUser(content=content)
+
+
+async def _status(client: Client, episode_id: str) -> str:
+    result = await client.call_tool("episode_status", {"episode_id": episode_id})
+    return (result.structured_content or {}).get("status", "unknown")
+
+
+# ---------------------------------------------------------------- solver
+@solver
+def ewa_agent(run_dir: str, task_dirs: list[str], observation: str = "text", max_turns: int | None = None):
+    """Plays one episode per sample through the real MCP server's tools until it ends or turns run out."""
+
+    async def solve(state: TaskState, generate: Generate) -> TaskState:
+        server = await _Server.get(Path(run_dir), [Path(d) for d in task_dirs])
+        async with Client(server.url) as client:
+            start = await client.call_tool("start_episode", {"task_id": str(state.sample_id),
+                                                             "options": {"observation": observation}})
+            if start.is_error:
+                raise EvalError("start_episode failed: " + " ".join(getattr(c, "text", "") for c in start.content))
+            episode_id = start.structured_content["episode_id"]
+            state.metadata["episode_id"] = episode_id
+            state.metadata["run_dir"] = run_dir
+            state.metadata["server_url"] = server.url
+            mcp = mcp_server_http(name="ewa-mcp", url=server.url, timeout=60)
+            tools = [_bind_episode(t, episode_id) for t in await mcp_tools(mcp).tools()
+                     if ToolDef(t).name not in HIDDEN_TOOLS]
+            state.messages = [ChatMessageSystem(content=SYSTEM_PROMPT),
+                              _first_message(str(state.sample_id), start, observation != "text")]
+            state.tools = tools
+            model = get_model()
+            nudged = False
+            for _ in range(max_turns or int(state.metadata.get("step_limit") or 60)):
+                output = await model.generate(state.messages, tools)
+                state.output = output
+                state.messages.append(output.message)
+                if output.message.tool_calls:
+                    result = await execute_tools(state.messages, tools)
+                    state.messages.extend(result.messages)
+                    if await _status(client, episode_id) != "running":
+                        break
+                elif nudged:
+                    break  # answers in prose twice: the scorer finishes the episode
+                else:
+                    nudged = True
+                    state.messages.append(ChatMessageUser(content=NUDGE))
+        return state
+
+    return solve
+
+
+# ---------------------------------------------------------------- scorer and metrics
+def _rate(key: str, applies: str | None = None):
+    """Mean of one key of the score dicts over the samples where it applies (``applies`` key is 1).
+
+    Inspect's epoch reducer turns a missing or None value into 0, so applicability is a key of its own."""
+
+    def compute(scores: list[Any]) -> float:
+        values = [float(s.score.value.get(key) or 0.0) for s in scores
+                  if isinstance(s.score.value, dict) and (applies is None or s.score.value.get(applies))]
+        return sum(values) / len(values) if values else float("nan")
+
+    return compute
+
+
+@metric(name="overall")
+def overall_success():
+    return _rate("overall")
+
+
+@metric(name="completion")
+def completion_rate():
+    return _rate("completion")
+
+
+@metric(name="web_only")
+def web_only_success():
+    return _rate("web", "has_web")
+
+
+@metric(name="embodied_only")
+def embodied_only_success():
+    return _rate("embodied", "has_embodied")
+
+
+def _level_metric(level: str):
+    @metric(name=f"geo_{level}")
+    def level_metric():
+        return _rate(f"geo_{level}", "is_geolocation")
+
+    return level_metric
+
+
+GEO_METRICS = [_level_metric(level) for level in GEO_LEVELS]
+
+
+def score_value(result: Any) -> dict[str, float]:
+    """The grader's EpisodeResult as one Inspect score: 1/0 successes, completion in [0, 1], and 1/0 flags
+    saying which side-metrics apply to the episode (web goals, embodied goals, a geolocation answer)."""
+    geo = result.geolocation or {}
+    value = {
+        "overall": 1.0 if result.overall_success else 0.0,
+        "completion": float(result.completion or 0.0),
+        "web": 1.0 if result.web_success else 0.0,
+        "has_web": 1.0 if result.has_web_goals else 0.0,
+        "embodied": 1.0 if result.embodied_success else 0.0,
+        "has_embodied": 1.0 if result.has_embodied_goals else 0.0,
+        "is_geolocation": 1.0 if result.domain == "geolocation" else 0.0,
+    }
+    for level in GEO_LEVELS:
+        value[f"geo_{level}"] = 1.0 if geo.get(level) else 0.0
+    return value
+
+
+@scorer(metrics=[overall_success(), completion_rate(), web_only_success(), embodied_only_success(),
+                 *(m() for m in GEO_METRICS)])
+def ewa_grader():
+    """Finishes the episode if the model left it open, then grades its record with the project's grader."""
+    from .graders import grade_episode
+
+    async def score(state: TaskState, target: Target) -> Score:
+        episode_id, run_dir = state.metadata.get("episode_id"), state.metadata.get("run_dir")
+        if not episode_id:
+            return Score(value={"overall": 0.0, "completion": 0.0}, explanation="the episode never started")
+        async with Client(state.metadata["server_url"]) as client:
+            if await _status(client, episode_id) == "running":
+                await client.call_tool("finish_episode", {"episode_id": episode_id})
+        result = await anyio.to_thread.run_sync(grade_episode, Path(run_dir) / episode_id)
+        why = result.error.category if result.error else ("success" if result.overall_success else "")
+        return Score(value=score_value(result), answer=result.answer,
+                     explanation=f"{result.conditions_met}/{result.conditions_total} conditions met; {why}",
+                     metadata={"episode_dir": str(Path(run_dir) / episode_id), "status": result.status})
+
+    return score
+
+
+# ---------------------------------------------------------------- tasks
+def ewa_task(domains: list[str] | None, *, difficulty: str | None = None, sample: int | None = None,
+             tasks: str | None = None, tasks_dir: str | None = None, observation: str = "text",
+             run_dir: str | None = None, max_turns: int | None = None) -> Task:
+    if observation not in ("text", "vision", "both"):
+        raise EvalError(f"observation={observation[:50]!r}: use text, vision or both")
+    dirs = [str(Path(tasks_dir).resolve())] if tasks_dir else [str(default_tasks_dir())]
+    out = str(Path(run_dir).resolve()) if run_dir else str((runs_dir() / ("inspect-" + new_run_id())).resolve())
+    return Task(
+        dataset=ewa_dataset(domains, difficulty, sample, tasks, dirs[0]),
+        solver=ewa_agent(run_dir=out, task_dirs=dirs, observation=observation, max_turns=max_turns),
+        scorer=ewa_grader(),
+        metadata={"run_dir": out, "ewa_mcp_domains": domains or list(DOMAINS)},
+    )
+
+
+@task
+def suite(difficulty: str | None = None, sample: int | None = None, tasks: str | None = None,
+          tasks_dir: str | None = None, observation: str = "text", run_dir: str | None = None,
+          max_turns: int | None = None) -> Task:
+    """Every domain of the benchmark."""
+    return ewa_task(list(DOMAINS), difficulty=difficulty, sample=sample, tasks=tasks, tasks_dir=tasks_dir,
+                    observation=observation, run_dir=run_dir, max_turns=max_turns)
+
+
+@task
+def cooking(difficulty: str | None = None, sample: int | None = None, tasks: str | None = None,
+            tasks_dir: str | None = None, observation: str = "text", run_dir: str | None = None,
+            max_turns: int | None = None) -> Task:
+    """Follow a recipe web site, then cook it in the kitchen."""
+    return ewa_task(["cooking"], difficulty=difficulty, sample=sample, tasks=tasks, tasks_dir=tasks_dir,
+                    observation=observation, run_dir=run_dir, max_turns=max_turns)
+
+
+@task
+def navigation(difficulty: str | None = None, sample: int | None = None, tasks: str | None = None,
+               tasks_dir: str | None = None, observation: str = "text", run_dir: str | None = None,
+               max_turns: int | None = None) -> Task:
+    """Get walking directions on the map site, then walk them in the street."""
+    return ewa_task(["navigation"], difficulty=difficulty, sample=sample, tasks=tasks, tasks_dir=tasks_dir,
+                    observation=observation, run_dir=run_dir, max_turns=max_turns)
+
+
+@task
+def shopping(difficulty: str | None = None, sample: int | None = None, tasks: str | None = None,
+             tasks_dir: str | None = None, observation: str = "text", run_dir: str | None = None,
+             max_turns: int | None = None) -> Task:
+    """Order in the shop, then walk to the pickup store."""
+    return ewa_task(["shopping"], difficulty=difficulty, sample=sample, tasks=tasks, tasks_dir=tasks_dir,
+                    observation=observation, run_dir=run_dir, max_turns=max_turns)
+
+
+@task
+def traveling(difficulty: str | None = None, sample: int | None = None, tasks: str | None = None,
+              tasks_dir: str | None = None, observation: str = "text", run_dir: str | None = None,
+              max_turns: int | None = None) -> Task:
+    """Walk to a landmark and answer a question from its wiki article."""
+    return ewa_task(["traveling"], difficulty=difficulty, sample=sample, tasks=tasks, tasks_dir=tasks_dir,
+                    observation=observation, run_dir=run_dir, max_turns=max_turns)
+
+
+@task
+def geolocation(difficulty: str | None = None, sample: int | None = None, tasks: str | None = None,
+                tasks_dir: str | None = None, observation: str = "text", run_dir: str | None = None,
+                max_turns: int | None = None) -> Task:
+    """Say where in the world a standpoint is (continent, country, city, street)."""
+    return ewa_task(["geolocation"], difficulty=difficulty, sample=sample, tasks=tasks, tasks_dir=tasks_dir,
+                    observation=observation, run_dir=run_dir, max_turns=max_turns)
+
+

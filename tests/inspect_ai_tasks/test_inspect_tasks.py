@@ -1,0 +1,94 @@
+"""The Inspect AI tasks end to end, offline: Inspect's mockllm model, scripted to make each task's oracle
+calls as model tool calls, plays one task of every domain through the real MCP server and Inspect's MCP
+tools; the project's grader scores 1.0. A scripted model that only talks scores 0.
+
+Scripted outputs carry their token usage: mockllm otherwise counts tokens with tiktoken, whose encoding
+is downloaded on first use (no network here)."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+pytest.importorskip("inspect_ai")
+
+from inspect_ai import eval as inspect_eval  # noqa: E402
+from inspect_ai.model import ModelOutput, ModelUsage, get_model  # noqa: E402
+
+from ewa_mcp import inspect_tasks  # noqa: E402
+from ewa_mcp.paths import tasks_dir  # noqa: E402
+from ewa_mcp.taskmodel import TaskStore  # noqa: E402
+
+USAGE = ModelUsage(input_tokens=10, output_tokens=5, total_tokens=15)
+
+
+def _with_usage(output: ModelOutput) -> ModelOutput:
+    output.usage = USAGE
+    return output
+
+
+def oracle_model():
+    """A mockllm whose every turn is the next oracle call of the task named in the first user message."""
+    store = TaskStore([tasks_dir()])
+
+    def outputs(messages, tools, tool_choice, config):
+        first = next(m for m in messages if m.role == "user")
+        task_id = re.search(r"Task id: (\S+)", first.text).group(1)
+        oracle = store.get(task_id).oracle
+        turn = sum(m.role == "assistant" for m in messages)
+        call = oracle[turn] if turn < len(oracle) else None
+        tool, args = (call.tool, call.args) if call else ("finish_episode", {})
+        return _with_usage(ModelOutput.for_tool_call("mockllm/model", tool, dict(args)))
+
+    return get_model("mockllm/model", custom_outputs=outputs)
+
+
+def talking_model():
+    return get_model("mockllm/model", custom_outputs=lambda *a: _with_usage(
+        ModelOutput.from_content("mockllm/model", "I would walk there and look around.")))
+
+
+def _run(task, model, tmp_path):
+    [log] = inspect_eval(task, model=model, log_dir=str(tmp_path / "logs"), display="none", max_samples=2)
+    assert log.status == "success", log.error
+    return log
+
+
+@pytest.mark.browser
+def test_scripted_oracle_scores_one_on_every_domain(tmp_path):
+    log = _run(inspect_tasks.suite(sample=1, run_dir=str(tmp_path / "run")), oracle_model(), tmp_path)
+    domains = {s.metadata["domain"] for s in log.samples}
+    assert domains == set(inspect_tasks.DOMAINS)
+    for sample in log.samples:
+        value = sample.scores["ewa_grader"].value
+        assert value["overall"] == 1.0, (sample.id, sample.scores["ewa_grader"].explanation)
+        assert value["completion"] == 1.0
+        # The model played through the MCP tools without ever seeing episode_id.
+        calls = [c for m in sample.messages if m.role == "assistant" for c in (m.tool_calls or [])]
+        assert calls and all("episode_id" not in c.arguments for c in calls)
+    metrics = log.results.scores[0].metrics
+    assert metrics["overall"].value == 1.0 and metrics["completion"].value == 1.0
+    assert metrics["web_only"].value == 1.0 and metrics["embodied_only"].value == 1.0
+    assert metrics["geo_country"].value == 1.0
+    # Every sample's episode was recorded where the grader reads it.
+    assert len(list((tmp_path / "run").glob("*/final_state.json"))) == len(inspect_tasks.DOMAINS)
+
+
+def test_a_model_that_only_talks_scores_zero(tmp_path):
+    log = _run(inspect_tasks.navigation(sample=2, run_dir=str(tmp_path / "run")), talking_model(), tmp_path)
+    assert len(log.samples) == 2
+    for sample in log.samples:
+        assert sample.scores["ewa_grader"].value["overall"] == 0.0
+    assert log.results.scores[0].metrics["overall"].value == 0.0
+
+
+def test_dataset_filters(tmp_path):
+    data = inspect_tasks.ewa_dataset(["cooking"], sample=3)
+    assert len(data) == 3 and all(s.metadata["domain"] == "cooking" for s in data)
+    one = inspect_tasks.ewa_dataset(None, tasks="navigation-*")
+    assert one and all(str(s.id).startswith("navigation-") for s in one)
+    with pytest.raises(inspect_tasks.EvalError, match="difficulty"):
+        inspect_tasks.ewa_dataset(["cooking"], difficulty="impossible")
+    with pytest.raises(inspect_tasks.TaskStoreMissing, match="--tasks DIR"):
+        inspect_tasks.ewa_dataset(None, tasks_dir_=str(tmp_path))
