@@ -71,3 +71,28 @@ def test_everything_the_observation_shows_in_reach_can_be_acted_on(scene):
                 s.put(s.handle(obj["parentReceptacles"][0]))
                 checked += 1
     assert checked > 10
+
+
+# ------------------------------------------------------------------ the picture (observation "vision")
+@pytest.mark.parametrize(("scene", "anchor"), [("FloorPlan1", "Knife"), ("FloorPlan13", "Fridge"),
+                                               ("FloorPlan22", "Sink"), ("FloorPlan7", "Toaster")])
+def test_the_picture_labels_what_is_visible_without_overlaps(scene, anchor):
+    from ewa_mcp.indoor.render import render_topdown
+
+    s = new_session(scene)
+    s.teleport(anchor)
+    placed = render_topdown(s.meta, s.reachable, label=s.handle).info["labels"]
+    texts = [p.label.text for p in placed]
+    assert len(texts) == len(set(texts))
+    for i, a in enumerate(placed):  # no two labels overlap
+        for b in placed[i + 1:]:
+            assert a.box[2] <= b.box[0] or b.box[2] <= a.box[0] or a.box[3] <= b.box[1] or b.box[3] <= a.box[1], \
+                (a.label.text, b.label.text)
+    _, data = build_observation(s)
+    in_reach = {h for h in data["in_reach"] if not h.startswith(("StoveKnob", "Cabinet", "Drawer"))}
+    assert in_reach <= set(texts)  # everything in reach is labelled ...
+    beyond = [t for t in texts if t not in data["in_reach"]]
+    assert len(beyond) >= 5  # ... and so is much of what is visible further away
+    hidden = {s.handle(i) for i, o in s.objects.items() for p in o.get("parentReceptacles") or []
+              if s.objects[p].get("openable") and not s.objects[p].get("isOpen")}
+    assert not hidden & set(texts)  # nothing shut in a closed fridge or cabinet is labelled
