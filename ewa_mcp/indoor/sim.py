@@ -123,6 +123,7 @@ class KitchenSim:
         self.held: SimObject | None = None
         # Where the held object was picked up from: that receptacle always takes it back (its slot is its own).
         self.held_from: SimObject | None = None
+        self._sight_memo: dict[int, tuple[bool, float, str]] | None = None
         self.cell: tuple[int, int] = (0, 0)
         self.rotation = 0.0
         self.horizon = 30.0
@@ -243,6 +244,15 @@ class KitchenSim:
 
     def sight(self, obj: SimObject) -> tuple[bool, float, str]:
         """(visible, distance, why not) from the agent's current pose."""
+        memo = self._sight_memo
+        if memo is None:
+            return self._sight(obj)
+        seen = memo.get(id(obj))
+        if seen is None:
+            seen = memo[id(obj)] = self._sight(obj)
+        return seen
+
+    def _sight(self, obj: SimObject) -> tuple[bool, float, str]:
         if obj is self.held or self._held_ancestor(obj):
             return True, HAND_REACH, ""
         ax, az = self.agent_xz()
@@ -862,8 +872,13 @@ class KitchenSim:
         x, z = self.agent_xz() if self.spec is not None else (0.0, 0.0)
         held = self.held
         bounds = self.spec.bounds if self.spec is not None else Box(0, 0, 0, 0, 0, 0)
+        self._sight_memo = {}  # one pose for the whole event: a receptacle's reach is worked out once
+        try:
+            objects = [self.object_metadata(o) for o in self.objects] if self.spec is not None else []
+        finally:
+            self._sight_memo = None
         metadata = {
-            "objects": [self.object_metadata(o) for o in self.objects] if self.spec is not None else [],
+            "objects": objects,
             "agent": self.agent_metadata() if self.spec is not None else {},
             "inventoryObjects": [{"objectId": held.object_id, "objectType": held.object_type}] if held else [],
             "heldObjectPose": None,
