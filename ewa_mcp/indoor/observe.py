@@ -129,7 +129,8 @@ def build_observation(session: KitchenSession, mode: str = "text") -> tuple[str,
         "deliveries": notes,
     }
     if mode == "vision":
-        lines.append("(The image shows the kitchen from above: you are the arrow, objects in reach are labelled.)")
+        lines.append("(The image shows the kitchen from above: you are the arrow; objects in reach are labelled in "
+                     "blue, other visible objects in grey; the side panel lists what is in reach.)")
         return "\n".join(lines), data
 
     children = _children(session)

@@ -113,7 +113,8 @@ class _Planner:
         items = [{"kitchen_type": t, "quantity": 1, "product_id": f"plan-{t}"} for t in delivered_types]
         if items:
             self.session.receive_deliveries([{"site": "shop", "type": "order_placed",
-                                              "order": {"order_id": "plan", "items": items}}])
+                                              "order": {"order_id": "plan", "fulfilment": "delivery",
+                                                        "items": items}}])
 
     # -------------------------------------------------------------- primitives
     @property

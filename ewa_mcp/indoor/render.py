@@ -2,7 +2,10 @@
 
 It needs nothing but the metadata (objects' boxes, the agent pose, scene bounds) and the
 reachable positions, so it draws any backend's kitchen. Furniture is drawn as boxes, small
-objects as dots; objects in reach carry their handle; the agent is an arrow with its view cone.
+objects as dots; the agent is an arrow with its view cone. Every object that can be seen from
+above (not shut in a closed receptacle) carries its handle — objects in reach first and in bold
+blue, then the rest nearest first — placed so that no two labels overlap: a label that finds no
+free spot near its object is left out (the side panel still lists everything in reach).
 A side panel lists what is held and what is in reach with their states.
 """
 
@@ -11,6 +14,7 @@ from __future__ import annotations
 import io
 import math
 from collections.abc import Callable, Iterable
+from dataclasses import dataclass
 from functools import lru_cache
 from typing import Any
 
@@ -75,7 +79,8 @@ def render_topdown(
         draw.ellipse([cx - dot, cz - dot, cx + dot, cz + dot], fill=(205, 205, 195))
 
     small = _font(10)
-    labels: list[tuple[float, float, str]] = []
+    labels: list[Label] = []
+    by_id = {o["objectId"]: o for o in objects}
     furniture = [o for o in objects if not o.get("pickupable") and o["objectType"] != "Floor"]
     furniture.sort(key=lambda o: _DRAW_ORDER.index(o["objectType"]) if o["objectType"] in _DRAW_ORDER else 99)
     for obj in furniture:
@@ -94,8 +99,11 @@ def render_topdown(
         if obj["objectType"] == "StoveBurner" and obj.get("isToggled"):
             colour = (230, 90, 30)
         draw.rectangle([a, b], fill=colour, outline=(80, 70, 60))
-        if obj.get("visible") and obj["objectType"] not in ("StoveKnob", "Sink", "Cabinet", "Drawer"):
-            labels.append(((a[0] + b[0]) / 2, (a[1] + b[1]) / 2, label(obj["objectId"])))
+        kind = obj["objectType"]
+        if kind not in ("StoveKnob", "Sink") and (obj.get("visible") or kind not in ("Cabinet", "Drawer")) \
+                and _seen_from_above(obj, by_id):
+            labels.append(Label((a[0] + b[0]) / 2, (a[1] + b[1]) / 2, label(obj["objectId"]),
+                                bool(obj.get("visible")), obj.get("distance", 0.0)))
 
     for obj in objects:
         if not obj.get("pickupable") or obj.get("isPickedUp"):
@@ -108,8 +116,8 @@ def render_topdown(
         if obj.get("isCooked"):
             colour = tuple(int(v * 0.55) for v in colour)
         draw.ellipse([cx - r, cz - r, cx + r, cz + r], fill=colour, outline=(30, 30, 30))
-        if obj.get("visible"):
-            labels.append((cx, cz, label(obj["objectId"])))
+        if _seen_from_above(obj, by_id):
+            labels.append(Label(cx, cz, label(obj["objectId"]), bool(obj.get("visible")), obj.get("distance", 0.0)))
 
     position = agent.get("position")
     if position:
@@ -126,12 +134,79 @@ def render_topdown(
         right = (ax + math.sin(heading - 2.5) * scale * 0.18, az - math.cos(heading - 2.5) * scale * 0.18)
         draw.polygon([tip, left, right], fill=(30, 100, 220))
 
-    for lx, lz, text in labels:
-        draw.text((lx + 3, lz - 5), text, fill=(10, 10, 10), font=small, stroke_width=2, stroke_fill=(255, 255, 255))
+    placements = place_labels(labels, draw, small, (0, 0, map_w, height))
+    image.info["labels"] = placements  # what was labelled where (not written into the PNG)
+    for placed in placements:
+        colour = (10, 40, 160) if placed.label.in_reach else (40, 40, 40)
+        lx, ly = placed.label.x, placed.label.y
+        bx0, by0, bx1, by1 = placed.box
+        if not (bx0 - 6 <= lx <= bx1 + 6 and by0 - 6 <= ly <= by1 + 6):  # moved away: a leader line to the object
+            draw.line([(lx, ly), (min(max(lx, bx0), bx1), min(max(ly, by0), by1))], fill=(120, 120, 120), width=1)
+        draw.text(placed.origin, placed.label.text, fill=colour, font=small, stroke_width=2,
+                  stroke_fill=(255, 255, 255))
 
     if panel and width > map_w:
         _draw_panel(draw, metadata, label, map_w, width, height)
     return image
+
+
+@dataclass(frozen=True)
+class Label:
+    x: float  # the object's point in the picture
+    y: float
+    text: str
+    in_reach: bool
+    distance: float
+
+
+@dataclass(frozen=True)
+class PlacedLabel:
+    label: Label
+    box: tuple[float, float, float, float]  # left, top, right, bottom of the text (with its outline)
+    origin: tuple[float, float]  # where draw.text puts it
+
+
+# Where a label may sit relative to its object's point (dx, dy of the text's top-left, in units of the
+# text's width w and height h): right, left, above, below, the corners, then the same further out.
+_SPOTS = [(0.15, -0.5), (-1.15, -0.5), (-0.5, -1.3), (-0.5, 0.3), (0.15, -1.4), (0.15, 0.4), (-1.15, -1.4),
+          (-1.15, 0.4)]
+_SPOTS += [(dx * k, dy + (k - 1) * (1.0 if dy > 0 else -1.0 if dy < -0.6 else 0.0)) for k in (2, 3)
+           for dx, dy in _SPOTS[:8] if (dx, dy) != (-0.5, -0.5)]
+_SPOTS += [(0.15, -0.5 + d) for d in (-2.2, 2.2, -3.3, 3.3)] + [(-1.15, -0.5 + d) for d in (-2.2, 2.2, -3.3, 3.3)]
+
+
+def _seen_from_above(obj: dict[str, Any], by_id: dict[str, dict[str, Any]]) -> bool:
+    """Not held, and not shut inside a closed receptacle (a closed fridge hides what is in it)."""
+    if obj.get("isPickedUp"):
+        return False
+    for parent in obj.get("parentReceptacles") or []:
+        p = by_id.get(parent, {})
+        if p.get("openable") and not p.get("isOpen"):
+            return False
+    return True
+
+
+def place_labels(labels: list[Label], draw: ImageDraw.ImageDraw, font: Any,
+                 area: tuple[float, float, float, float]) -> list[PlacedLabel]:
+    """Greedy collision-free placement: objects in reach first, then by distance; each label takes the
+    first spot around its point that overlaps no placed label and stays inside ``area``; one with no
+    free spot is left out."""
+    placed: list[PlacedLabel] = []
+    pad = 1.0
+    for item in sorted(labels, key=lambda lb: (not lb.in_reach, lb.distance, lb.text)):
+        left, top, right, bottom = draw.textbbox((0, 0), item.text, font=font, stroke_width=2)
+        w, h = right - left, bottom - top
+        for fx, fy in _SPOTS:
+            x, y = item.x + fx * w, item.y + fy * h
+            box = (x, y, x + w, y + h)
+            if box[0] < area[0] or box[1] < area[1] or box[2] > area[2] or box[3] > area[3]:
+                continue
+            if any(box[0] < o.box[2] + pad and o.box[0] < box[2] + pad and box[1] < o.box[3] + pad
+                   and o.box[1] < box[3] + pad for o in placed):
+                continue
+            placed.append(PlacedLabel(item, box, (x - left, y - top)))
+            break
+    return placed
 
 
 def _draw_panel(draw: ImageDraw.ImageDraw, metadata: dict[str, Any], label: Callable[[str], str],

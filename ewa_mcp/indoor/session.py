@@ -417,9 +417,16 @@ class KitchenSession:
             if not isinstance(event, dict) or event.get("site") != "shop" or event.get("type") != "order_placed":
                 continue
             order = event.get("order") or {}
-            for item in order.get("items") or []:
-                if isinstance(item, dict) and item.get("kitchen_type"):
-                    arrived.extend(self._deliver(order, item))
+            items = [i for i in order.get("items") or [] if isinstance(i, dict) and i.get("kitchen_type")]
+            if items and order.get("fulfilment") != "delivery":
+                # Only an order placed for delivery comes to the kitchen; say so once for a pickup order.
+                kinds = ", ".join(sorted({str(i["kitchen_type"]) for i in items}))
+                arrived.append(f"Order {order.get('order_id')} ({kinds}) is for pickup at the store, so nothing "
+                               "arrives in this kitchen; to get groceries here, order them with 'Deliver to my "
+                               "kitchen' at checkout.")
+                continue
+            for item in items:
+                arrived.extend(self._deliver(order, item))
         self._pending_notes.extend(arrived)
         return arrived
 

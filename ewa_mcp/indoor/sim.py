@@ -121,6 +121,9 @@ class KitchenSim:
         self.objects: list[SimObject] = []
         self.by_id: dict[str, SimObject] = {}
         self.held: SimObject | None = None
+        # Where the held object was picked up from: that receptacle always takes it back (its slot is its own).
+        self.held_from: SimObject | None = None
+        self._sight_memo: dict[int, tuple[bool, float, str]] | None = None
         self.cell: tuple[int, int] = (0, 0)
         self.rotation = 0.0
         self.horizon = 30.0
@@ -136,6 +139,7 @@ class KitchenSim:
         self.objects = []
         self.by_id = {}
         self.held = None
+        self.held_from = None
         self._order = 0
         seeds = self.spec.objects
         made: list[SimObject] = []
@@ -240,6 +244,15 @@ class KitchenSim:
 
     def sight(self, obj: SimObject) -> tuple[bool, float, str]:
         """(visible, distance, why not) from the agent's current pose."""
+        memo = self._sight_memo
+        if memo is None:
+            return self._sight(obj)
+        seen = memo.get(id(obj))
+        if seen is None:
+            seen = memo[id(obj)] = self._sight(obj)
+        return seen
+
+    def _sight(self, obj: SimObject) -> tuple[bool, float, str]:
         if obj is self.held or self._held_ancestor(obj):
             return True, HAND_REACH, ""
         ax, az = self.agent_xz()
@@ -254,6 +267,12 @@ class KitchenSim:
         closed = self._enclosing_closed(obj)
         if closed is not None:
             return False, distance, f"it is inside the closed {closed.object_id}; open that first"
+        parent = obj.parent
+        if parent is not None and parent.object_type != "Floor":
+            # What rests in or on a receptacle is within reach exactly when the receptacle is: the
+            # observation lists it as that receptacle's contents, so it must act the same.
+            reachable, _, why = self.sight(parent)
+            return reachable, distance, why and f"it is in/on {parent.object_id}, which is out of reach: {why}"
         if distance > self.visibility_distance:
             return False, distance, (f"it is {distance:.2f} m away and the reach is {self.visibility_distance:.1f} m; "
                                      "teleport to it or move closer")
@@ -532,6 +551,7 @@ class KitchenSim:
             raise ActionFailed(f"Agent's hand is already holding {self.held.object_id}; put it down first "
                                "(PutObject or DropHandObject)")
         self._require_interactable(obj, args)
+        self.held_from = obj.parent
         self._detach(obj)
         self.held = obj
 
@@ -552,10 +572,11 @@ class KitchenSim:
             hint = ", ".join(allowed[:8]) + (" …" if len(allowed) > 8 else "")
             raise ActionFailed(f"{held.object_type} cannot be placed in/on {target.object_type} "
                                f"(a {target.object_type} takes {hint})")
-        if self._room(target) <= 0:
+        if self._room(target) <= 0 and target is not self.held_from:
             raise ActionFailed(f"No valid positions to place object found: {target.object_id} is full; "
                                "take something out first")
         self.held = None
+        self.held_from = None
         self._attach(held, target)
 
     def _a_DropHandObject(self, args: dict[str, Any]) -> None:
@@ -574,6 +595,7 @@ class KitchenSim:
                 target = obj
                 break
         self.held = None
+        self.held_from = None
         if target is not None:
             self._attach(held, target)
         else:
@@ -724,6 +746,7 @@ class KitchenSim:
         rng = random.Random(f"spawn:{self.spec.name}:{seed}")
         movable = [o for o in self.objects if o.spec.pickupable]
         self.held = None
+        self.held_from = None
         for obj in movable:
             self._detach(obj)
         for obj in movable:
@@ -849,8 +872,13 @@ class KitchenSim:
         x, z = self.agent_xz() if self.spec is not None else (0.0, 0.0)
         held = self.held
         bounds = self.spec.bounds if self.spec is not None else Box(0, 0, 0, 0, 0, 0)
+        self._sight_memo = {}  # one pose for the whole event: a receptacle's reach is worked out once
+        try:
+            objects = [self.object_metadata(o) for o in self.objects] if self.spec is not None else []
+        finally:
+            self._sight_memo = None
         metadata = {
-            "objects": [self.object_metadata(o) for o in self.objects] if self.spec is not None else [],
+            "objects": objects,
             "agent": self.agent_metadata() if self.spec is not None else {},
             "inventoryObjects": [{"objectId": held.object_id, "objectType": held.object_type}] if held else [],
             "heldObjectPose": None,

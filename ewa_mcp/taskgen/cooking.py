@@ -1,6 +1,13 @@
 """Cooking tasks: find the right recipe online (constraints single out one of a look-alike pair),
 follow it to its last step, then cook it in a kitchen that holds what it needs — or buy the
-missing food on the shop first."""
+missing food on the shop, for delivery to the kitchen, first.
+
+Three templates, each with its difficulty:
+  * cook (easy): one constraint (or none for a unique name), every food in the kitchen;
+  * buy (medium): one constraint, one needed food missing and ordered for delivery;
+  * hard: two constraints that together single out the recipe, two needed foods missing and
+    ordered for delivery (in one order).
+"""
 
 from __future__ import annotations
 
@@ -9,40 +16,82 @@ from typing import Any
 from ..indoor.planner import check_recipe_executable, plan_ops, scene_inventory
 from ..taskmodel import KitchenStart, OrderPlaced, RecipeCompleted, StartState, Task, WebStart
 from ..websites.recipes.catalog import Filters, load_catalog
+from ..websites.shop import catalog as shop_catalog
 from ..websites.recipes.vocabulary import KITCHEN_PRODUCTS
 from .common import call, ref, rng_for, site_url, step_limit_for
 from .recipe_goals import FOODS, PIECE_SOURCE, goals_from_ops, recipe_ops
 
 SCENES = [f"FloorPlan{i}" for i in range(1, 31)]
-TASKS_PER_RECIPE = 5
+TASKS_PER_RECIPE = 5  # cook and hard tasks of one recipe, together
+HARD_PER_RECIPE = 3  # of those, hard ones (recipes with a look-alike and two or more kitchen foods)
 SHOPPING_VARIANTS_TARGET = 40
+DIFFICULTY = {"cook": "easy", "buy": "medium", "hard": "hard"}
+# Every cooking intent says which parts of a recipe the kitchen goal leaves out (issue 16).
+KITCHEN_SCOPE = ("Only the kitchen steps count: steps and ingredients the recipe page marks as not in the "
+                 "kitchen are not part of the kitchen goal.")
 
 DIET_LABEL = {"vegetarian": "Vegetarian", "vegan": "Vegan", "non-vegetarian": "Non-vegetarian"}
 
 
-def constraints_for(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dict[str, Any]]]:
-    """(intent suffix, search filters) pairs that leave exactly this recipe among those with its name."""
+def constraint_options(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dict[str, Any]]]:
+    """Every (intent suffix, search filter) that is true of this recipe and tells it from some look-alike."""
     same_name = [r for r in catalog.recipes if r["name"] == recipe["name"]]
-    options: list[tuple[str, dict[str, Any]]] = []
-    if len(same_name) == 1:
-        options.append(("", {}))
     others = [r for r in same_name if r["id"] != recipe["id"]]
     names = {i["name"] for i in recipe["ingredients"]}
     other_names = set().union(*({i["name"] for i in o["ingredients"]} for o in others)) if others else set()
+    options: list[tuple[str, dict[str, Any]]] = []
     options.append((f"Diet type: {DIET_LABEL[recipe['diet']]}", {"diet": recipe["diet"]}))
     options.append((f"Difficulty level: {recipe['difficulty'].capitalize()}", {"difficulty": recipe["difficulty"]}))
     options += [(f"Use equipment: {e}", {"equipment": [e]}) for e in recipe["equipment"]]
     options += [(f"Include ingredient: {n}", {"include": [n]}) for n in sorted(names - other_names)]
     options += [(f"Exclude ingredient: {n}", {"exclude": [n]}) for n in sorted(other_names - names)]
-    good = []
-    for suffix, filters in options:
-        f = Filters(q=recipe["name"], diet=filters.get("diet", ""), difficulty=filters.get("difficulty", ""),
-                    include=tuple(filters.get("include", ())), exclude=tuple(filters.get("exclude", ())),
-                    equipment=tuple(filters.get("equipment", ())))
-        hits = [r for r in catalog.search(f) if r["name"] == recipe["name"]]
-        if [r["id"] for r in hits] == [recipe["id"]] and (suffix or len(same_name) == 1):
-            good.append((suffix, filters))
+    return options
+
+
+def singles_out(recipe: dict[str, Any], catalog: Any, filters: dict[str, Any]) -> bool:
+    """Searching the recipe's name with these filters leaves exactly this recipe among those of its name."""
+    f = Filters(q=recipe["name"], diet=filters.get("diet", ""), difficulty=filters.get("difficulty", ""),
+                include=tuple(filters.get("include", ())), exclude=tuple(filters.get("exclude", ())),
+                equipment=tuple(filters.get("equipment", ())))
+    return [r["id"] for r in catalog.search(f) if r["name"] == recipe["name"]] == [recipe["id"]]
+
+
+def constraints_for(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dict[str, Any]]]:
+    """(intent suffix, search filters) pairs that leave exactly this recipe among those with its name."""
+    unique = sum(r["name"] == recipe["name"] for r in catalog.recipes) == 1
+    good = [("", {})] if unique else []
+    good += [(suffix, f) for suffix, f in constraint_options(recipe, catalog) if singles_out(recipe, catalog, f)]
     return good
+
+
+def merge_filters(a: dict[str, Any], b: dict[str, Any]) -> dict[str, Any] | None:
+    """Both filters at once (None when they set the same single-valued filter)."""
+    merged = dict(a)
+    for key, value in b.items():
+        if key in ("diet", "difficulty"):
+            if key in merged:
+                return None
+            merged[key] = value
+        else:
+            merged[key] = [*merged.get(key, []), *value]
+    return merged
+
+
+def two_constraints(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dict[str, Any]]]:
+    """Pairs of constraints that together single out a recipe with a look-alike, best first: pairs where
+    neither constraint alone does (the agent must apply both), then the others."""
+    if recipe.get("pair_id") is None:
+        return []
+    options = constraint_options(recipe, catalog)
+    alone = {suffix: singles_out(recipe, catalog, f) for suffix, f in options}
+    pairs: list[tuple[int, str, dict[str, Any]]] = []
+    for i, (s1, f1) in enumerate(options):
+        for s2, f2 in options[i + 1:]:
+            merged = merge_filters(f1, f2)
+            if merged is not None and singles_out(recipe, catalog, merged):
+                pairs.append((int(alone[s1]) + int(alone[s2]), f"{s1}. {s2}", merged))
+    pairs.sort(key=lambda item: item[0])  # stable: the options' own order within a rank
+    return [(suffix, merged) for _, suffix, merged in pairs]
 
 
 def recipe_web_oracle(recipe: dict[str, Any], filters: dict[str, Any]) -> list[Any]:
@@ -58,11 +107,37 @@ def recipe_web_oracle(recipe: dict[str, Any], filters: dict[str, Any]) -> list[A
     return calls
 
 
-def buy_oracle(product_id: str) -> list[Any]:
-    return [call("browser_goto", url=site_url("shop", f"/product/{product_id}")),
-            call("browser_click", element=ref("button", "Add to cart")),
-            call("browser_goto", url=site_url("shop", "/checkout")),
+def delivery_store(products: list[str]) -> tuple[str, str, list[str]] | None:
+    """(store id, store name, sizes): the first store that has every product in its first size."""
+    sizes = [shop_catalog.get_product(p).sizes[0].label for p in products]
+    for store in shop_catalog.load_stores():
+        if all(shop_catalog.get_product(p).offer(size, store.id) is not None
+               and shop_catalog.stock(p, size, store.id) > 0 for p, size in zip(products, sizes)):
+            return store.id, store.name, sizes
+    return None
+
+
+def buy_oracle(products: list[str]) -> list[Any]:
+    """Add each product (its first size, from one store that has them all) to the cart, then check out
+    for delivery to the kitchen."""
+    found = delivery_store(products)
+    assert found is not None, f"no store has all of {products}"
+    _, store_name, sizes = found
+    calls: list[Any] = []
+    for product, size in zip(products, sizes):
+        calls += [call("browser_goto", url=site_url("shop", f"/product/{product}")),
+                  call("browser_type", element=ref("combobox", "Size"), text=size),
+                  call("browser_type", element=ref("combobox", "Store"), text=store_name),
+                  call("browser_click", element=ref("button", "Add to cart"))]
+    return [*calls, call("browser_goto", url=site_url("shop", "/checkout")),
+            call("browser_click", element=ref("radio", "Deliver to my kitchen")),
             call("browser_click", element=ref("button", "Place order"))]
+
+
+def kitchen_steps(recipe: dict[str, Any]) -> dict[str, list[int]]:
+    """Which step numbers the kitchen goal covers, and which the recipe page marks as not kitchen steps."""
+    return {"kitchen": [n for n, step in enumerate(recipe["steps"], 1) if step.get("kitchen")],
+            "not_kitchen": [n for n, step in enumerate(recipe["steps"], 1) if not step.get("kitchen")]}
 
 
 def needed_foods(ops: list[dict[str, Any]]) -> set[str]:
@@ -70,26 +145,37 @@ def needed_foods(ops: list[dict[str, Any]]) -> set[str]:
 
 
 def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str, Any], n: int,
-              buy: str | None = None) -> Task | None:
+              buy: list[str] | None = None, kind: str | None = None) -> Task | None:
+    buy = list(buy or [])
+    kind = kind or ("buy" if buy else "cook")
     ops = recipe_ops(recipe)
-    ok, _ = check_recipe_executable(scene, ops, available_extra_types=[buy] if buy else [])
+    ok, _ = check_recipe_executable(scene, ops, available_extra_types=buy)
     if not ok:
         return None
-    kitchen = [call(c["tool"], **c["args"]) for c in plan_ops(scene, ops, delivered_types=[buy] if buy else [])]
+    products = [KITCHEN_PRODUCTS[food] for food in buy]
+    if buy and delivery_store(products) is None:
+        return None
+    kitchen = [call(c["tool"], **c["args"]) for c in plan_ops(scene, ops, delivered_types=buy)]
     web = recipe_web_oracle(recipe, filters)
     web_goals: list[Any] = [RecipeCompleted(recipe_id=recipe["id"])]
     intent = f"Cook {recipe['name']}." + (f" {suffix}." if suffix else "")
     if buy:
-        product = KITCHEN_PRODUCTS[buy]
-        web += buy_oracle(product)
-        web_goals.append(OrderPlaced(product_id=product))
-        intent += f" Your kitchen has no {buy}: order it online from the shop for delivery first."
+        web += buy_oracle(products)
+        web_goals += [OrderPlaced(product_id=product) for product in products]
+        if len(buy) == 1:
+            intent += f" Your kitchen has no {buy[0]}: order it from the shop for delivery to your kitchen first."
+        else:
+            missing = " and no ".join(buy)
+            intent += (f" Your kitchen has no {missing}: order them from the shop for delivery to your kitchen "
+                       "first.")
+    intent += " " + KITCHEN_SCOPE
     oracle = [*web, call("switch_environment", target="embodied", message=f"cook {recipe['name']}"), *kitchen,
               call("finish_episode")]
-    kind = "buy" if buy else "cook"
+    steps = kitchen_steps(recipe)
     return Task(
         id=f"cooking-{recipe['id']}-{kind}-{n:02d}",
         domain="cooking",
+        difficulty=DIFFICULTY[kind],
         intent=intent,
         start=StartState(environment="web", web=WebStart(start_url="recipes:/"),
                          embodied=KitchenStart(scene=scene)),
@@ -99,7 +185,9 @@ def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str
         step_limit=step_limit_for(len(oracle) + len(recipe["steps"])),
         oracle=oracle,
         metadata={"recipe_id": recipe["id"], "recipe_name": recipe["name"], "scene": scene,
-                  "constraint": suffix or None, "pair_id": recipe.get("pair_id"), "buy": buy},
+                  "constraint": suffix or None, "pair_id": recipe.get("pair_id"),
+                  "buy": (buy[0] if len(buy) == 1 else buy) if buy else None,
+                  "kitchen_steps": steps["kitchen"], "not_kitchen_steps": steps["not_kitchen"]},
     )
 
 
@@ -117,9 +205,24 @@ def generate() -> list[Task]:
         foods = needed_foods(ops)
         scenes = SCENES[:]
         rng.shuffle(scenes)
+        # Hard: two constraints, two needed foods missing (replacing cook tasks, so the suite keeps its size).
+        hard = 0
+        pairs = two_constraints(recipe, catalog)
+        if pairs and len(foods) >= 2:
+            for scene in scenes:
+                if hard >= HARD_PER_RECIPE:
+                    break
+                missing = sorted(foods - inventories[scene]["food"])
+                if len(missing) != 2:
+                    continue
+                suffix, filters = pairs[hard % len(pairs)]
+                task = make_task(recipe, scene, suffix, filters, hard, buy=missing, kind="hard")
+                if task is not None:
+                    tasks.append(task)
+                    hard += 1
         n = 0
         for scene in scenes:
-            if n >= TASKS_PER_RECIPE:
+            if n + hard >= TASKS_PER_RECIPE:
                 break
             if not foods <= inventories[scene]["food"]:
                 continue
@@ -134,7 +237,7 @@ def generate() -> list[Task]:
                 missing = sorted(foods - inventories[scene]["food"])
                 if len(missing) == 1:
                     suffix, filters = constraints[0]
-                    task = make_task(recipe, scene, suffix, filters, 0, buy=missing[0])
+                    task = make_task(recipe, scene, suffix, filters, 0, buy=missing)
                     if task is not None:
                         tasks.append(task)
                         shopping += 1

@@ -138,7 +138,7 @@ async def test_groceries_ordered_online_arrive_in_the_kitchen(server):
         r = await client.call_tool("kitchen_teleport", {"episode_id": ep, "object": "Potato"})
         assert r.is_error and "shopping site" in r.content[0].text
         episodes.emit_event(ep, {"site": "shop", "type": "order_placed", "order": {
-            "order_id": "o-1", "store_id": "store-2",
+            "order_id": "o-1", "store_id": "store-2", "fulfilment": "delivery",
             "items": [{"product_id": "potato-russet", "kitchen_type": "Potato", "size": "1 lb", "quantity": 1}]}})
         r = await client.call_tool("get_observation", {"episode_id": ep})
         assert "A delivery arrived: Potato_1 on CounterTop_" in r.content[0].text

@@ -144,8 +144,24 @@ def test_held_object_and_its_contents_are_shown():
 
 
 # ------------------------------------------------------------------ deliveries
-def order(items, order_id="o1"):
-    return {"site": "shop", "type": "order_placed", "order": {"order_id": order_id, "store_id": "s1", "items": items}}
+def order(items, order_id="o1", fulfilment="delivery"):
+    return {"site": "shop", "type": "order_placed",
+            "order": {"order_id": order_id, "store_id": "s1", "fulfilment": fulfilment, "items": items}}
+
+
+def test_only_an_order_for_delivery_reaches_the_kitchen():
+    s = new_session("FloorPlan3")  # no Potato here
+    events = [order([{"product_id": "p1", "kitchen_type": "Potato", "quantity": 1}], "o1", fulfilment="pickup")]
+    notes = s.receive_deliveries(events)
+    assert not ids_of(s, "Potato") and s.final_state()["deliveries"] == []
+    assert notes == ["Order o1 (Potato) is for pickup at the store, so nothing arrives in this kitchen; to get "
+                     "groceries here, order them with 'Deliver to my kitchen' at checkout."]
+    # An order without a fulfilment (not a delivery) delivers nothing either; a delivery order does.
+    events.append({"site": "shop", "type": "order_placed",
+                   "order": {"order_id": "o2", "items": [{"product_id": "p1", "kitchen_type": "Potato"}]}})
+    assert "nothing arrives" in s.receive_deliveries(events)[0] and not ids_of(s, "Potato")
+    events.append(order([{"product_id": "p1", "kitchen_type": "Potato", "quantity": 1}], "o3"))
+    assert s.receive_deliveries(events)[0].startswith("A delivery arrived: Potato_1 on CounterTop_")
 
 
 def test_groceries_arrive_on_a_counter_once():

@@ -161,10 +161,27 @@ def test_recipe_page_shows_facts_ingredients_equipment_and_image(client):
     assert f"<h1>{html.escape(recipe['name'])}</h1>" in page
     for item in recipe["ingredients"]:
         assert f"{html.escape(item['amount'])} {html.escape(item['name'])}" in page
-    online = next(i for i in recipe["ingredients"] if not i["kitchen_type"])
-    assert f"find {online['name']} in the shop" in page  # links to the shop's search
+    # Kitchen foods link to their shop product for delivery (whichever one a kitchen lacks); shop-only
+    # ingredients are marked as outside the kitchen goal, with no buy link to mislead an agent.
+    for item in recipe["ingredients"]:
+        if item["kitchen_type"]:
+            assert re.search(rf'/product/{item["product_id"]}">order {item["name"]} for delivery</a>', page)
+        else:
+            assert f"{html.escape(item['name'])} (not in the kitchen: not part of the kitchen goal)" in page
+            assert f"/product/{item['product_id']}\"" not in page and "find " not in page
     alt = re.search(rf'<img src="/image/{recipe["id"]}.svg" alt="([^"]+)"', page).group(1)
     assert recipe["name"] in html.unescape(alt)
+
+
+def test_every_step_says_what_of_it_the_kitchen_does(client):
+    recipe = BY_ID["r001"]  # step 4 is plain text (garlic, olive oil); step 6 names sea salt beside its op
+    plain = client.get("/recipe/r001?step=4").text
+    assert "Not a kitchen step" in plain and "not part of the kitchen goal" in plain
+    mixed = client.get("/recipe/r001?step=6").text
+    assert f"In the kitchen: {recipe['steps'][5]['kitchen']}" in mixed
+    assert "Not in the kitchen (not part of the kitchen goal): Sea Salt." in mixed
+    doable = client.get("/recipe/r001?step=1").text
+    assert "kitchen-note" not in doable.split("</style>")[1]  # its text is the kitchen's own words
 
 
 def test_image_is_stable_svg_describing_its_ingredients(client):

@@ -207,7 +207,7 @@ def test_checkout_places_an_order_with_the_grader_shape(app, sink):
     cheddar = catalog.price(CHEDDAR, "16 oz", "store-traderjoes-chelsea")
     eggs = catalog.price("prod-eggs", "12 ct", "store-traderjoes-chelsea")
     assert event == {"site": "shop", "type": "order_placed", "order": {
-        "order_id": "EWA-1001", "store_id": "store-traderjoes-chelsea",
+        "order_id": "EWA-1001", "store_id": "store-traderjoes-chelsea", "fulfilment": "pickup",
         "items": [{"product_id": CHEDDAR, "size": "16 oz", "quantity": 2, "kitchen_type": None, "unit_price": cheddar},
                   {"product_id": "prod-eggs", "size": "12 ct", "quantity": 1, "kitchen_type": "Egg",
                    "unit_price": eggs}],
@@ -231,6 +231,22 @@ def test_checkout_reprices_at_the_chosen_pickup_store(app, sink):
     assert event["order"]["store_id"] == target
     assert event["order"]["items"][0]["unit_price"] == catalog.price("prod-apple", "1 each", target)
     assert event["order"]["items"][0]["kitchen_type"] == "Apple"
+
+
+def test_checkout_offers_pickup_or_delivery_to_the_kitchen(app, sink):
+    c = client(app)
+    add(c, "prod-eggs", "12 ct", "store-traderjoes-chelsea", 1)
+    page = c.get("/checkout").text
+    assert 'value="pickup" checked' in page and "Deliver to my kitchen" in page  # pickup stays the default
+    r = c.post("/checkout", data={"store_id": "store-traderjoes-chelsea", "fulfilment": "delivery"})
+    [event] = sink.of("ep-1", "order_placed")
+    assert event["order"]["fulfilment"] == "delivery" and event["order"]["items"][0]["kitchen_type"] == "Egg"
+    assert "will be delivered to your kitchen from Trader Joe" in r.text and "ready for pickup" not in r.text
+    assert "(delivered to your kitchen)" in c.get("/orders").text
+    add(c, "prod-eggs", "12 ct", "store-traderjoes-chelsea", 1)
+    r = c.post("/checkout", data={"store_id": "store-traderjoes-chelsea", "fulfilment": "drone"})
+    assert r.status_code == 400 and "choose pickup or delivery" in r.text
+    assert len(sink.of("ep-1", "order_placed")) == 1
 
 
 def test_checkout_refuses_a_store_that_cannot_fill_the_cart(app, sink):

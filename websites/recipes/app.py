@@ -110,7 +110,7 @@ def create_app(ctx: SiteContext) -> Starlette:
                        "step": step, "of": n})
         return templates.TemplateResponse(request, "recipe.html", {
             "recipe": recipe, "step": step, "of": n, "text": recipe["steps"][step - 1]["text"],
-            "alt": describe(recipe),
+            "current": recipe["steps"][step - 1], "alt": describe(recipe),
         })
 
     async def image(request: Request) -> Response:

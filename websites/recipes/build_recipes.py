@@ -300,20 +300,20 @@ def build_recipe(dish: Dish, variant: Variant, recipe_id: str, source: str = "di
             texts.append(_default_text(code, arg, f"{dish.name}|{recipe_id}|{index}|{code}"))
             minutes += MINUTES.get(code, 1)
         same_put = len(codes) > 1 and len({c for c, _ in codes}) == 1 and codes[0][0] in ("plate", "bowl")
-        if custom:
-            text = custom
-        elif same_put:
+        generated: str | None = None  # the step in the kitchen's own words, from its ops alone
+        if same_put:
             # "Put the egg and the potato slices on a plate." rather than one clause per piece.
             things = [f"the {NOUN[arg or '']}" for _, arg in codes]
             where = "on a plate" if codes[0][0] == "plate" else "in a bowl"
-            text = f"Put {', '.join(things[:-1])} and {things[-1]} {where}."
+            generated = f"Put {', '.join(things[:-1])} and {things[-1]} {where}."
         elif texts:
             if len(codes) > 1 and codes[0][0] == "crack":  # "Crack the egg, then fry it ..."
                 texts[1] = texts[1].replace("the egg", "it", 1)
             # "Slice the bread. / Toast it." reads as one instruction: "Slice the bread, then toast it."
             parts = [texts[0].rstrip(".")] + [t[0].lower() + t[1:].rstrip(".") for t in texts[1:]]
-            text = ", then ".join(parts) + "."
-        else:
+            generated = ", then ".join(parts) + "."
+        text = custom or generated
+        if not text:
             raise SpecError(f"{where}: a step needs op codes or text")
         if not codes:
             minutes += 2
@@ -323,10 +323,14 @@ def build_recipe(dish: Dish, variant: Variant, recipe_id: str, source: str = "di
         if stray:
             raise SpecError(f"{where}: the text names {sorted(stray)} but no op so far uses it; "
                             "add the op (e.g. 'slice Tomato') or reword")
-        for product in products_in(text, where):
+        named = products_in(text, where)
+        for product in named:
             if product not in products:
                 products.append(product)
-        steps.append({"text": text, "ops": ops})
+        # What of this step the kitchen can do: its ops, in the kitchen's words (None: nothing, the
+        # step is not part of the kitchen goal); and the shop ingredients it names, which the kitchen
+        # does not have (part of the dish, not of the kitchen goal).
+        steps.append({"text": text, "ops": ops, "kitchen": generated, "not_in_kitchen": named})
     for name in variant.amounts:
         if name not in kitchen and name not in products:
             if name in KITCHEN_FOODS:

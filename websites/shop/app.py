@@ -20,7 +20,7 @@ from starlette.routing import Route
 
 from ..common import SiteContext, SiteEvents, episode_of, exception_handlers, make_templates
 from . import catalog
-from .state import MAX_QUANTITY, ShopError, ShopState
+from .state import FULFILMENTS, MAX_QUANTITY, ShopError, ShopState
 
 SITE_DIR = Path(__file__).resolve().parent
 SORTS = {"relevance": "Best match", "name": "Name (A-Z)", "price": "Lowest price", "calories": "Fewest calories"}
@@ -236,7 +236,7 @@ def create_app(ctx: SiteContext) -> Starlette:
 
     # ------------------------------------------------------------ checkout and orders
     def render_checkout(request: Request, selected: str = "", error: str | None = None,
-                        status: int = 200) -> Response:
+                        status: int = 200, fulfilment: str = "pickup") -> Response:
         episode = episode_of(request)
         lines = state.cart(episode)
         line_stores = {line.store.id for line in lines}
@@ -244,7 +244,7 @@ def create_app(ctx: SiteContext) -> Starlette:
             selected = next(iter(line_stores))  # everything was added for one store: preselect it
         quotes = [state.quote(episode, store.id) for store in stores] if lines else []
         return render(request, "checkout.html", status=status, lines=lines, quotes=quotes, selected=selected,
-                      error=error)
+                      error=error, fulfilment=fulfilment)
 
     async def checkout_page(request: Request) -> Response:
         page_view(request)
@@ -253,17 +253,22 @@ def create_app(ctx: SiteContext) -> Starlette:
     async def checkout_submit(request: Request) -> Response:
         form = await _form(request)
         store_id = _text(form, "store_id", required=False)
+        fulfilment = _text(form, "fulfilment", required=False) or "pickup"
         episode = episode_of(request)
+        if fulfilment not in FULFILMENTS:
+            return render_checkout(request, selected=store_id, status=400,
+                                   error=f"Unknown fulfilment {fulfilment[:40]!r}; choose pickup or delivery.")
         if not store_id:
             return render_checkout(request, error="Choose a pickup store before placing the order.", status=400)
         if store_id not in {s.id for s in stores}:
             return render_checkout(request, error=f"Unknown pickup store {store_id!r}; choose one of the listed "
                                                   f"stores.", status=400)
         try:
-            order = state.place_order(episode, store_id)
+            order = state.place_order(episode, store_id, fulfilment)
         except ShopError as exc:
             emit(request, "checkout_failed", store_id=store_id, reason=exc.message)
-            return render_checkout(request, selected=store_id, error=exc.message, status=exc.status)
+            return render_checkout(request, selected=store_id, error=exc.message, status=exc.status,
+                                   fulfilment=fulfilment)
         emit(request, "order_placed", order=order.event_payload())
         return RedirectResponse(f"/orders/{order.order_id}?placed=1", status_code=303)
 
