@@ -161,6 +161,8 @@ def grade_record(record: EpisodeRecord, radius_m: float | None = None) -> Episod
         overall = all_met([ConditionResult(side="web", kind="part", description="", met=v)
                            for v in (web_success, embodied_success, *([answer_correct] if answer_checked else []))])
         completion = sum(1 for c in conditions if c.met is True) / len(conditions) if conditions else None
+        if geolocation is not None and isinstance(geolocation.get("completion"), float):
+            completion = geolocation["completion"]  # geolocation: the fraction of levels right (graders/geo.py)
 
     trajectory = record.trajectory
     steps = final.get("steps") if isinstance(final.get("steps"), int) else sum(
