@@ -221,3 +221,51 @@ def test_hard_split_is_at_least_15_percent_and_no_single_cue_decides():
                 spec = compose_view(loc, sp, heading)
                 assert not _deciding_city_cues(loc, spec, describe_view(spec)), (loc.id, sp, heading)
                 assert spec.street_sign is None or spec.street_sign.style == loc.country.sign
+
+
+# What a building style's words name must be drawn (issue 16: images showed generic buildings
+# where the text said "grey sandstone, soot-darkened, chimney stacks").
+DRAWN_FEATURES = {
+    r"\bchimney": lambda a: a.chimneys,
+    r"\bsoot": lambda a: a.soot,
+    r"\bdormers?\b": lambda a: a.dormers and a.roof == "mansard",
+    r"\bshutters\b": lambda a: a.shutters is not None,
+    r"\bsash windows|\bstucco window frames": lambda a: a.window_frame is not None,
+    r"\bfire escapes": lambda a: a.fire_escapes,
+    r"\bwater tanks": lambda a: a.water_tanks,
+    r"\bcorrugated-iron roofs": lambda a: a.corrugated,
+    r"\bbrick\b": lambda a: a.material == "brick" or bool(a.brick_colours),
+    r"\b(sandstone|limestone|stone buildings|stone blocks|beige stone)\b": lambda a: a.material == "stone",
+    r"\bwooden townhouses|\btimber\b": lambda a: a.material == "wood",
+    r"\bconcrete\b": lambda a: a.material in ("concrete", "glass", "stone", "wood"),
+    r"\bglazed blue-and-white tiles": lambda a: bool(a.tiled_colours),
+    r"^glass and steel": lambda a: a.material == "glass",
+}
+
+
+def test_every_feature_a_building_description_names_is_drawn():
+    from ewa_mcp.geo.styles import ARCH
+
+    for key, arch in ARCH.items():
+        for pattern, drawn in DRAWN_FEATURES.items():
+            if re.search(pattern, arch.description):
+                assert drawn(arch), f"{key}: the text says {pattern!r} but the style does not draw it"
+
+
+@pytest.mark.parametrize("feature", ["chimneys", "soot", "material", "water_tanks", "fire_escapes", "shutters"])
+@pytest.mark.parametrize("composition", ["facade", "along"])
+def test_drawn_features_change_the_picture(feature, composition):
+    import dataclasses
+
+    from ewa_mcp.geo.styles import ARCH
+
+    owner = {"chimneys": "stone_terrace", "soot": "stone_terrace", "material": "british",
+             "water_tanks": "middle_eastern", "fire_escapes": "na_downtown", "shutters": "mediterranean"}[feature]
+    if composition == "along" and feature in ("fire_escapes", "shutters"):
+        pytest.skip("drawn on front-on facades only")
+    spec = next(s for loc in LOCATIONS_LIST for _sp, _h, s in all_views(loc)
+                if s.arch_key == owner and s.composition == composition)
+    off = {"material": "plaster", "shutters": None}.get(feature, False)
+    plain = dataclasses.replace(spec, arch=dataclasses.replace(ARCH[owner], **{feature: off}))
+    with_it, without = render_view(spec), render_view(plain)
+    assert with_it.tobytes() != without.tobytes(), f"{owner} {composition}: {feature} draws nothing"
