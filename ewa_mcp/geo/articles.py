@@ -106,10 +106,17 @@ def _plate_line(country: Country, example_region: str | None) -> str:
         parts.append(f"with a blue band on the left marked {style.band}")
     if style.caption:
         parts.append(f"headed '{style.caption}'")
-    example = style.text(random.Random(f"wiki-plate-{country.iso}"), example_region)
-    caption = style.caption_text(example_region)
-    shown = f"{caption}: {example}" if caption and style.region_caption else example
-    return "- " + ", ".join(parts) + f"; for example '{shown}'."
+    # The example never carries a real region code or caption: the code of one of the location
+    # cities would tie a string seen on a plate to that city.
+    shape = None
+    if example_region and example_region.isascii() and not style.region_caption:
+        shape = "".join("@" if c.isalpha() else "#" if c.isdigit() else c for c in example_region)
+    example = style.text(random.Random(f"wiki-plate-{country.iso}"), shape)
+    if style.region_caption:
+        parts.append("headed with the name of the region where the car is registered")
+    elif style.has_region:
+        parts.append("the first characters name the region where the car is registered")
+    return "- " + ", ".join(parts) + f"; for example '{example}'."
 
 
 def local_area_code(city: City) -> str | None:
@@ -379,7 +386,7 @@ def write_articles(out_dir: Path, articles_root: Path | None = None) -> int:
             banned |= view_words(city, by_city[city.key])
         for city in same:
             about = without_view_words(city.about, banned)
-            extra += ["## The city", *([about] if about else []), *_city_sections(city, by_city[city.key])]
+            extra += [*(["## The city", about] if about else []), *_city_sections(city, by_city[city.key])]
         cand = tuple(country.aliases) + tuple(a for c in same for a in c.aliases)
         if iso == "GE":
             cand = ("Georgia",) + cand
