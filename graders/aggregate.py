@@ -18,6 +18,16 @@ from .stats import mean_t_interval, wilson_interval
 GEO_LEVELS = ("continent", "country", "city", "street", "all_levels")
 
 
+def episode_completion(episode: EpisodeResult) -> float:
+    """An episode's completion for the aggregate: 0 when it could not be graded. A geolocation
+    episode's is the fraction of its four levels right (graders/geo.py), as in its own result."""
+    geo = episode.geolocation or {}
+    value = geo.get("completion")
+    if isinstance(value, int | float) and not isinstance(value, bool) and episode.completion is not None:
+        return float(value)
+    return episode.completion or 0.0
+
+
 def proportion(successes: int, n: int) -> Proportion:
     low, high = wilson_interval(successes, n)
     return Proportion(successes=successes, n=n, value=successes / n if n else None, ci_low=low, ci_high=high)
@@ -91,7 +101,7 @@ def domain_aggregate(domain: str, episodes: list[EpisodeResult]) -> DomainAggreg
         n_with_problems=sum(1 for e in episodes if e.problems),
         n_ungradable=sum(1 for e in episodes if not e.gradable),
         overall_accuracy=proportion(sum(e.overall_success is True for e in episodes), n),
-        completion_rate=mean_estimate([e.completion or 0.0 for e in episodes]),
+        completion_rate=mean_estimate([episode_completion(e) for e in episodes]),
         # Over every episode of the domain (a task without web goals passes vacuously), so that
         # overall <= web-only and overall <= embodied-only hold per domain; n/a when no task has any.
         web_only_accuracy=proportion(sum(e.web_success is True for e in episodes), n) if with_web else None,

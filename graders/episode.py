@@ -163,6 +163,8 @@ def grade_record(record: EpisodeRecord, radius_m: float | None = None) -> Episod
         if record.invalid:
             overall = False  # a record that breaks its own format proves nothing (docs/grading.md)
         completion = sum(1 for c in conditions if c.met is True) / len(conditions) if conditions else None
+        if geolocation is not None and isinstance(geolocation.get("completion"), float):
+            completion = geolocation["completion"]  # geolocation: the fraction of levels right (graders/geo.py)
 
     trajectory = record.trajectory
     steps = final.get("steps") if isinstance(final.get("steps"), int) else sum(

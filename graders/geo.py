@@ -102,6 +102,8 @@ def grade_geolocation(answer_check: GeoAnswer | dict[str, Any], submission: dict
     return {
         **levels,
         "all_levels": all(levels.values()),
+        # Partial credit: the fraction of the four levels right (the episode's completion).
+        "completion": sum(levels.values()) / len(LEVELS),
         "distance_km": distance,
         "bands": distance_bands(distance),
         "score": geoguessr_score(distance),

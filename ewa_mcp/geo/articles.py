@@ -106,10 +106,17 @@ def _plate_line(country: Country, example_region: str | None) -> str:
         parts.append(f"with a blue band on the left marked {style.band}")
     if style.caption:
         parts.append(f"headed '{style.caption}'")
-    example = style.text(random.Random(f"wiki-plate-{country.iso}"), example_region)
-    caption = style.caption_text(example_region)
-    shown = f"{caption}: {example}" if caption and style.region_caption else example
-    return "- " + ", ".join(parts) + f"; for example '{shown}'."
+    # The example never carries a real region code or caption: the code of one of the location
+    # cities would tie a string seen on a plate to that city.
+    shape = None
+    if example_region and example_region.isascii() and not style.region_caption:
+        shape = "".join("@" if c.isalpha() else "#" if c.isdigit() else c for c in example_region)
+    example = style.text(random.Random(f"wiki-plate-{country.iso}"), shape)
+    if style.region_caption:
+        parts.append("headed with the name of the region where the car is registered")
+    elif style.has_region:
+        parts.append("the first characters name the region where the car is registered")
+    return "- " + ", ".join(parts) + f"; for example '{example}'."
 
 
 def local_area_code(city: City) -> str | None:
@@ -131,7 +138,7 @@ def _fmt_int(value: int | float | str) -> str:
 
 
 def country_article(country: Country, cities: list[City], names: dict[str, str], aliases: list[str],
-                    extra: list[str]) -> str:
+                    extra: list[str], banned: set[str] = frozenset(), city_state: bool = False) -> str:
     record = gazetteer.countries()[country.iso]
     continent = gazetteer.country_continent(country.iso)
     capital = CAPITAL_OVERRIDES.get(country.iso, record["capital"])
@@ -155,13 +162,18 @@ def country_article(country: Country, cities: list[City], names: dict[str, str],
     capital_ref = f"[[{capital}]]" if _key(capital) in names else capital
     body = [f"**{title}** is a country in {continent}. Its capital is {capital_ref}."]
     body.append("## Street-level clues")
-    body += _words_line(country.langs)
+    if city_state:  # the article is the city's own: name the languages, quote no sign
+        names = [f"{language(c).name} ({language(c).script} script)" for c in country.langs]
+        body.append("- Shop and street signs are written in " + " and ".join(names) + ".")
+    else:
+        body += _words_line(country.langs)
     body.append(f"- Traffic drives on the **{country.drive}**.")
     body.append(f"- The centre line of two-way streets is {country.centre_line}"
                 + (f"; road edges are marked in {country.edge_line}." if country.edge_line != "white" else "."))
     body.append(_plate_line(country, example_region))
     body.append(f"- Typical city streets: {arch.description}.")
-    body += [f"- {fact}" for fact in country.facts]
+    facts = [without_view_words(fact, banned) for fact in country.facts]
+    body += [f"- {fact}" for fact in facts if fact]
     others = [c for c in cities if _key(c.name) != _key(title)]
     if others:
         body.append("## Cities")
@@ -182,13 +194,104 @@ def _paragraphs(lines: list[str]) -> list[str]:
     return blocks
 
 
+# Words that sit on many signs and say nothing about one place; everything else a view of a
+# city can quote (street names, sign lines, the area code, the plate code) is kept out of the
+# articles, so that searching a string seen in a view never lands on the answer.
+GENERIC_WORDS = frozenset(
+    "a an and the of de del della dei di da do dos das du des la le les el il lo los las van von der den het "
+    "st street road avenue ave rd square place plaza platz piazza rue via calle carrer rua strasse straße "
+    "ulitsa ulica lane way boulevard blvd".split())
+
+
+def _fold(text: str) -> str:
+    decomposed = unicodedata.normalize("NFKD", text)
+    return "".join(c for c in decomposed if not unicodedata.combining(c)).casefold()
+
+
+def words_of(text: str) -> set[str]:
+    """The search words of a text (as the wiki's search tokenises it, accents and case folded)."""
+    return set(re.findall(r"\w+", _fold(text)))
+
+
+def view_words(city: City, locations: list[Location]) -> set[str]:
+    """Distinctive words that the views of a city's locations quote: street names and sign lines,
+    the telephone area code and the plate region code."""
+    words: set[str] = set()
+    for loc in locations:
+        for text in (loc.street, *loc.sign, *loc.street_aliases):
+            words |= words_of(text)
+    if city.area_code:
+        words |= words_of(city.area_code) | words_of(local_area_code(city) or "")
+    if city.plate_region:
+        words |= words_of(city.plate_region.replace("#", " ").replace("@", " "))
+    return words - GENERIC_WORDS
+
+
+def without_view_words(text: str, banned: set[str]) -> str:
+    """The sentences of ``text`` that quote none of the banned words."""
+    sentences = re.split(r"(?<=[.!?])\s+", text.strip())
+    return " ".join(s for s in sentences if s and not (words_of(s) & banned))
+
+
+def area_code_words(city: City) -> str | None:
+    """The area code as an encyclopedia gives it: its length and the numbering block it belongs
+    to (all digits but the last), never the code itself."""
+    local = local_area_code(city)
+    if not local:
+        return None
+    digits = re.sub(r"\D", "", local)
+    n = len(digits)
+    words = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five"}.get(n, str(n))
+    if n >= 3:
+        return f"a {words}-digit area code of the {digits[:-1]}x block"
+    if digits[0] == "0":
+        return f"a {words}-digit area code (the trunk prefix 0 and one digit)"
+    return f"a {words}-digit area code" + (f" beginning with {digits[0]}" if n == 2 else "")
+
+
+def population_words(population: int | float | str) -> str:
+    """Rounded, as an encyclopedia's lead gives it (and no long digit groups that a phone number could share)."""
+    try:
+        value = float(population)
+    except (TypeError, ValueError):
+        return str(population)
+    return f"about {value / 1e6:.2g} million" if value >= 1e5 else f"about {value / 1e3:.2g} thousand"
+
+
+def _char_kinds(code: str) -> str:
+    kinds = []
+    for ch in code:
+        kind = ("letter" if ch.isascii() and ch.isalpha() else "digit" if ch.isdigit() or ch == "#"
+                else "letter" if ch == "@" else None if ch in " -" else "local-script character")
+        if kind and kind not in kinds:
+            kinds.append(kind)
+    return " and ".join(f"{k}s" for k in kinds)
+
+
+def plate_words(city: City) -> str | None:
+    """How the city's plates differ from the country's, described, not quoted."""
+    region = city.plate_region
+    style = COUNTRIES[city.iso].plate
+    if not region or not style.has_region:
+        return None
+    if style.region_caption:
+        return "Number plates registered here carry the name of their region as a caption above the characters"
+    if not region.isascii():
+        return "Number plates registered here carry the region's name in the local script beside the characters"
+    length = len(region.replace(" ", "").replace("-", ""))
+    size = {1: "one", 2: "two", 3: "three", 4: "four"}.get(length, str(length))
+    return (f"Number plates registered here carry a {size}-character region code ({_char_kinds(region)}) in "
+            f"place of the country's generic characters")
+
+
 def _city_sections(city: City, locations: list[Location]) -> list[str]:
     country = COUNTRIES[city.iso]
     arch = ARCH[city.arch or country.arch]
     climate = CLIMATE[city.climate]
-    body = ["## Street-level clues"]
+    body = ["## What the city looks like"]
     if city.langs:
-        body += _words_line(city.langs)
+        names = [f"{language(c).name} ({language(c).script} script)" for c in city.langs]
+        body.append("- Shop and street signs are written in " + " and ".join(names) + ".")
     body.append(f"- Buildings: {arch.description}.")
     trees = city.trees or climate.trees
     body.append("- Street trees: " + ", ".join(TREE_WORDS[t] for t in trees) + ".")
@@ -196,19 +299,19 @@ def _city_sections(city: City, locations: list[Location]) -> list[str]:
     for feature in city.transport:
         kind, _, colour = feature.partition(":")
         body.append("- Often seen: " + VEHICLE_WORDS[kind].format(colour=colour) + ".")
-    if city.area_code:
-        body.append(f"- Local telephone numbers carry the area code {local_area_code(city)} "
-                    f"(country calling code +{str(gazetteer.countries()[city.iso]['phone']).lstrip('+')}).")
-    if city.places or locations:
-        body.append("## Notable streets and squares")
-        for place, looks in city.places.items():
+    phone = area_code_words(city)
+    if phone:
+        body.append(f"- Local telephone numbers carry {phone}.")
+    plate = plate_words(city)
+    if plate:
+        body.append(f"- {plate}.")
+    banned = view_words(city, locations)
+    places = [(place, looks) for place, looks in city.places.items()
+              if not (words_of(place) | words_of(looks)) & banned]
+    if places:
+        body.append("## Landmarks")
+        for place, looks in places:
             body.append(f"- **{place}**: {looks}.")
-        for loc in locations:
-            if loc.street in city.places:
-                continue
-            sign = " / ".join(loc.sign)
-            also = f"; also called {', '.join(loc.street_aliases[:3])}" if loc.street_aliases else ""
-            body.append(f"- **{loc.street}** (street signs read \"{sign}\"{also}).")
     return body
 
 
@@ -220,16 +323,13 @@ def city_article(city: City, locations: list[Location], aliases: list[str]) -> s
         "Country": ctitle,
         "Continent": locations[0].continent if locations and locations[0].continent
         else gazetteer.country_continent(city.iso),
-        "Population": _fmt_int(record["population"]),
-        "Coordinates": f"{record['latitude']:.4f}, {record['longitude']:.4f}",
+        "Population": population_words(record["population"]),
         "Time zone": record["timezone"],
         "Climate": CLIMATE_WORDS[city.climate].split(":")[0].capitalize(),
     }
-    if city.area_code:
-        infobox["Telephone area code"] = local_area_code(city) or ""
-    if city.plate_region:
-        infobox["Number plate code"] = city.plate_region.replace("#", "").replace("@", "").strip(" -")
-    body = [f"**{city.name}** is a city in [[{ctitle}]]. {city.about}", *_city_sections(city, locations)]
+    about = without_view_words(city.about, view_words(city, locations))
+    body = [f"**{city.name}** is a city in [[{ctitle}]]." + (f" {about}" if about else ""),
+            *_city_sections(city, locations)]
     coordinates = {"lat": round(record["latitude"], 4), "lng": round(record["longitude"], 4)}
     return (_front_matter(city.name, "Cities", aliases, infobox, coordinates) + "\n"
             + "\n\n".join(_paragraphs(body)) + "\n")
@@ -281,13 +381,17 @@ def write_articles(out_dir: Path, articles_root: Path | None = None) -> int:
         # A city-state (Singapore, Hong Kong) shares its country's article.
         extra: list[str] = []
         same = [c for c in cities_by_country[iso] if _key(c.name) == _key(title)]
+        banned: set[str] = set()
+        for city in cities_by_country[iso]:
+            banned |= view_words(city, by_city[city.key])
         for city in same:
-            extra += ["## The city", city.about, *_city_sections(city, by_city[city.key])]
+            about = without_view_words(city.about, banned)
+            extra += [*(["## The city", about] if about else []), *_city_sections(city, by_city[city.key])]
         cand = tuple(country.aliases) + tuple(a for c in same for a in c.aliases)
         if iso == "GE":
             cand = ("Georgia",) + cand
         files[slugify(title)] = country_article(country, cities_by_country[iso], names, free_aliases(cand, title),
-                                                extra)
+                                                extra, banned, city_state=bool(same))
     for key in sorted(by_city):
         city = CITIES[key]
         if _key(city.name) in taken_titles or _key(city.name) == _key(country_title(COUNTRIES[city.iso])):

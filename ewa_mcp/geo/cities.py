@@ -420,6 +420,13 @@ CITIES_LIST: list[City] = [
     _("miami", 4164138, "Miami", "US", "tropical", "305", "FLORIDA",
       langs=("es-la", "en-us"),
       about="Florida city with a large Cuban community in Little Havana (Calle Ocho); area code 305."),
+    _("washington", 4140963, "Washington", "US", "humid_subtropical", "202", "DISTRICT OF COLUMBIA",
+      aliases=("Washington, D.C.", "Washington DC", "Washington D.C."),
+      about="Capital of the United States, laid out on a grid cut by broad diagonal avenues; a height limit keeps "
+            "its buildings low, so the domes and monuments of the federal city dominate the skyline."),
+    _("austin", 4671654, "Austin", "US", "humid_subtropical", "512", "TEXAS",
+      about="Capital of Texas on the Colorado River, a fast-growing city of glass office towers around a "
+            "pink-granite capitol."),
     _("seattle", 5809844, "Seattle", "US", "oceanic", "206", "WASHINGTON",
       about="Largest city of Washington state; Pike Street leads down to Pike Place Market. Area code 206."),
     _("toronto", 6167865, "Toronto", "CA", "continental", "416", "ONTARIO", transport=("tram:red",),

@@ -14,6 +14,7 @@ from typing import Any
 
 from ..taskmodel import GeoAnswer, GeoStart, StartState, Task, ToolCall, WebStart
 from . import gazetteer
+from .hardness import task_difficulty
 from .locations import LOCATIONS_LIST, Location
 
 SETTINGS = ("baseline", "embodied")
@@ -70,7 +71,7 @@ def build_task(loc: Location, setting: str) -> Task:
     )
     metadata: dict[str, Any] = {
         "setting": setting,
-        "difficulty": loc.difficulty,
+        "cue_level": loc.difficulty,  # which level the cue placement makes hard (locations.py)
         "location_id": loc.id,
         "country_code": loc.city.iso,
         "continent": answer.continent,
@@ -79,6 +80,7 @@ def build_task(loc: Location, setting: str) -> Task:
     return Task(
         id=task_id(loc, setting),
         domain="geolocation",
+        difficulty=task_difficulty(loc),
         intent=INTENTS[setting],
         start=start,
         answer=answer,

@@ -351,11 +351,9 @@ LOCATIONS_LIST: list[Location] = [
     _l("g136", "port-louis", "Royal Street", "ROYAL STREET|RUE ROYALE", -20.1615, 57.5020, 40, "s",
        aliases=("Rue Royale",)),
     # ----------------------------------------------------------------------------- North America
-    _l("g137", "new-york", "Times Square", "Times Sq|Broadway", 40.7580, -73.9855, 20, "e",
-       L("billboards", "buildings on every side are covered from street level to the rooftops with giant "
-                       "illuminated billboards and video screens; a red glass staircase stands in a pedestrian "
-                       "plaza, yellow taxis in the traffic"), aliases=("Broadway", "Seventh Avenue",
-                                                                       "7th Avenue")),
+    _l("g137", "washington", "Constitution Avenue", "Constitution Ave NW", 38.8920, -77.0330, 90, "e",
+       L("obelisk", "a very tall, plain white stone obelisk without any carving rises from a wide grassy park, "
+                    "ringed at its foot by a circle of flagpoles all flying the same striped flag")),
     _l("g138", "new-york", "Bleecker Street", "Bleecker St", 40.7285, -74.0010, 55, "s"),
     _l("g139", "chicago", "Michigan Avenue", "N Michigan Av", 41.8920, -87.6245, 0, "c",
        aliases=("North Michigan Avenue", "Magnificent Mile", "Michigan Ave")),
@@ -364,7 +362,7 @@ LOCATIONS_LIST: list[Location] = [
        aliases=("Hollywood Blvd",)),
     _l("g142", "new-orleans", "Bourbon Street", "Bourbon St|Rue Bourbon", 29.9580, -90.0660, 45, "c",
        aliases=("Rue Bourbon",)),
-    _l("g143", "boston", "Newbury Street", "Newbury St", 42.3500, -71.0810, 70, "s"),
+    _l("g143", "austin", "Congress Avenue", "Congress Ave", 30.2680, -97.7428, 0, "s"),
     _l("g144", "miami", "Southwest 8th Street", "SW 8 St|Calle Ocho", 25.7655, -80.2190, 90, "c",
        aliases=("SW 8th Street", "Calle Ocho", "Tamiami Trail", "8th Street")),
     _l("g145", "seattle", "Pike Street", "Pike St", 47.6105, -122.3400, 50, "s"),

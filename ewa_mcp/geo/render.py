@@ -17,6 +17,7 @@ from functools import lru_cache
 from PIL import Image, ImageDraw
 
 from . import fonts
+from .facade_details import along_roof, along_wall, front_extras, wall_texture, window_trim
 from .scene import ShopSign, StreetSign, Text, Vehicle, ViewSpec
 from .styles import ArchStyle
 
@@ -169,6 +170,7 @@ def _along_buildings(draw: ImageDraw.ImageDraw, spec: ViewSpec) -> None:
         for (z0, z1), b in reversed(list(zip(BUILDING_SPANS, row, strict=True))):
             height = b.floors * 0.32
             draw.polygon(_facade_quad(side, z0, z1, height), fill=_rgb(b.colour), outline=_shade(b.colour, 0.7))
+            along_wall(draw, _p, side * FACADE_X, z0, z1, height, b.colour, arch)
             _window_grid(draw, side, z0, z1, b.floors, arch, b.colour)
             # ground floor shopfront
             x = side * FACADE_X
@@ -191,6 +193,7 @@ def _along_buildings(draw: ImageDraw.ImageDraw, spec: ViewSpec) -> None:
                     s = 14 / z0
                     _rect(draw, px - s * side * 0.2, py, px + s * 0.8 * -side, py + s * 0.6, fill=(225, 225, 220))
             _roof(draw, side, z0, z1, height, arch)
+            along_roof(draw, _p, side * FACADE_X, side, z0, z1, height, b.colour, arch)
             if arch.vertical_signs:
                 rng = random.Random(spec.seed + int(z0 * 10) + side)
                 px, py = _p(x - side * 0.05, height * 0.85, 1 / (z0 + 0.15))
@@ -472,6 +475,7 @@ def _facade_row(draw: ImageDraw.ImageDraw, spec: ViewSpec, base: int, floor_px: 
         w = rng.randint(140, 190)
         top = base - b.floors * floor_px
         draw.rectangle([x, top, x + w, base], fill=_rgb(b.colour), outline=_shade(b.colour, 0.7))
+        wall_texture(draw, (x, top, x + w, base), b.colour, arch, rng)
         cols = max(2, w // 40)
         for f in range(1, b.floors):
             y0 = base - (f + 1) * floor_px + 8
@@ -480,9 +484,7 @@ def _facade_row(draw: ImageDraw.ImageDraw, spec: ViewSpec, base: int, floor_px: 
                 wx = x + (c + 0.5) * w / cols
                 draw.rectangle([wx - 9, y0, wx + 9, y0 + wh], fill=_shade(b.colour, 0.45),
                                outline=_shade(b.colour, 0.8))
-                if arch.window == "shuttered":
-                    draw.rectangle([wx - 15, y0, wx - 10, y0 + wh], fill=(60, 110, 80))
-                    draw.rectangle([wx + 10, y0, wx + 15, y0 + wh], fill=(60, 110, 80))
+                window_trim(draw, wx, y0, wh, arch)
             if arch.balconies and f % 2 == 1:
                 draw.rectangle([x + 6, y0 + wh, x + w - 6, y0 + wh + 4], fill=(40, 40, 40))
             if arch.ac_units and f % 2 == 0:
@@ -498,6 +500,7 @@ def _facade_row(draw: ImageDraw.ImageDraw, spec: ViewSpec, base: int, floor_px: 
                          outline=_shade(b.colour, 0.6))
         else:
             draw.rectangle([x - 3, top - 6, x + w + 3, top], fill=_shade(b.colour, 0.6))
+        front_extras(draw, (x, top, x + w, base), floor_px, b.colour, arch, rng)
         draw.rectangle([x + 4, base - floor_px + 6, x + w - 4, base], fill=_shade(b.colour, 0.3))
         if arch.veranda:
             draw.rectangle([x, base - floor_px - 4, x + w, base - floor_px + 4], fill=(120, 120, 118))

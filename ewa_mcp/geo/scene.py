@@ -13,7 +13,11 @@ level      country cues            city cues (plates with a      street-name sig
 easy       every view              every view                   p0 north (and ahead at others)
 city       every view              only after moving (p1..p4)   one step away (p1, p2)
 street     every view              every view                   two steps away (p3, p4)
+hard       every view              shared ones only (transport,  two steps away (p3, p4)
+                                   trees); never a deciding one
 =========  ======================  ===========================  ==============================
+
+"hard" is not a cue level but the hard split of hardness.py, over city- and street-level locations.
 """
 
 from __future__ import annotations
@@ -24,6 +28,7 @@ from functools import lru_cache
 from .cities import City
 from .countries import Country, StreetSignStyle
 from .geometry import COMPASS, COMPASS_DEG, signed_angle
+from .hardness import is_hard
 from .graph import Standpoint, build_graph
 from .languages import SHOP_KINDS, language
 from .locations import Landmark, Location
@@ -129,13 +134,15 @@ def ahead_heading(loc: Location, sp: Standpoint) -> str:
 
 
 def city_cues_visible(loc: Location, sp: Standpoint) -> bool:
-    return loc.difficulty != "city" or sp.steps_from_start >= 1
+    """Whether the city's cues show here: hard locations show only the shared ones (transport,
+    trees, buildings) everywhere and never a deciding one (see hardness.py)."""
+    return is_hard(loc) or loc.difficulty != "city" or sp.steps_from_start >= 1
 
 
 def street_sign_visible(loc: Location, sp: Standpoint, heading: str) -> bool:
     if loc.difficulty == "easy":
         return heading == "north" if sp.steps_from_start == 0 else heading == ahead_heading(loc, sp)
-    wanted_steps = 1 if loc.difficulty == "city" else 2
+    wanted_steps = 1 if loc.difficulty == "city" and not is_hard(loc) else 2
     return sp.steps_from_start == wanted_steps and heading == ahead_heading(loc, sp)
 
 
@@ -181,7 +188,8 @@ def _plate(rng, style: PlateStyle, region: str | None, legible: bool, rear: bool
 def _vehicles(rng, loc: Location, composition: str, city_cues: bool) -> tuple[Vehicle, ...]:
     country, city = loc.country, loc.city
     plate_style = country.plate
-    region_ok = city_cues or not plate_style.has_region
+    # A regional plate is a deciding cue: legible only where city cues show, never at hard locations.
+    region_ok = (city_cues and not is_hard(loc)) or not plate_style.has_region
     transport = _transport(city) if city_cues else []
     vehicles: list[Vehicle] = []
     car_colours = (("#d9d9d9", "silver"), ("#f4f4f4", "white"), ("#222222", "black"), ("#8b1e1e", "dark red"),
@@ -273,11 +281,15 @@ def compose_view(loc: Location, standpoint_id: str, heading: str) -> ViewSpec:
     else:
         slots = ["left", "right"][: rng.randint(1, 2)]
     area_coded = "{a}" in country.phone
-    with_phone = (city_cues or not area_coded) and rng.random() < 0.85
+    deciding = city_cues and not is_hard(loc)
+    roll = rng.random()
+    # Where the city's cues show, an area-coded number always does (the difficulty table promises
+    # a city cue in those views); elsewhere most shop signs carry a number without one.
+    with_phone = (deciding or not area_coded) and (roll < 0.85 or (deciding and area_coded))
 
     sign = None
     if street_sign_visible(loc, sp, heading):
-        style = city.sign or country.sign
+        style = country.sign if is_hard(loc) else (city.sign or country.sign)
         sign = StreetSign(_sign_lines(loc.sign), style, rng.choice(["left", "right"]))
 
     transport_kinds = {k for k, _ in _transport(city)} if city_cues else set()

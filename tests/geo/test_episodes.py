@@ -202,3 +202,28 @@ async def test_geo_tools_refuse_other_domains(server, tmp_path):
         for name in ("geo_look", "geo_move", "submit_location"):
             assert tools[name].output_schema, name
         assert set(tools["submit_location"].input_schema["required"]) == {"episode_id", "lat", "lng"}
+
+
+async def test_completion_is_the_fraction_of_levels_right(server):
+    # Issue 15 item 7: a submission right at continent and country but wrong at city and street
+    # completes half the task; overall success stays "every level right".
+    from ewa_mcp.graders.aggregate import domain_aggregate
+    from ewa_mcp.graders.episode import grade_episode
+
+    mcp, episodes, run_dir = server
+    task = episodes.tasks.get("geo-0001-baseline")
+    async with Client(mcp) as client:
+        half, _ = await start(client, task.id)
+        r = await client.call_tool("submit_location", {
+            "episode_id": half, "lat": 0.0, "lng": 0.0, "continent": task.answer.continent,
+            "country": task.answer.country, "city": "Nowhere", "street": "No Street"})
+        assert not r.is_error, text_of(r)
+        full, _ = await start(client, task.id)
+        for call in task.oracle:
+            await client.call_tool(call.tool, {"episode_id": full, **call.args})
+    half_result, full_result = grade_episode(run_dir / half), grade_episode(run_dir / full)
+    assert half_result.completion == 0.5 and half_result.overall_success is False
+    assert half_result.geolocation["completion"] == 0.5
+    assert full_result.completion == 1.0 and full_result.overall_success is True
+    aggregate = domain_aggregate("geolocation", [half_result, full_result])
+    assert aggregate.completion_rate.value == 0.75 and aggregate.overall_accuracy.value == 0.5

@@ -15,7 +15,11 @@ from PIL import Image
 
 from ewa_mcp.geo import fonts
 from ewa_mcp.geo.describe import describe_view
+from ewa_mcp.geo.generate import build_tasks
 from ewa_mcp.geo.geometry import COMPASS
+from ewa_mcp.geo.hardness import is_hard
+from ewa_mcp.geo.languages import language
+from ewa_mcp.geo.styles import TREE_WORDS, VEHICLE_WORDS
 from ewa_mcp.geo.graph import build_graph
 from ewa_mcp.geo.locations import LOCATIONS, LOCATIONS_LIST
 from ewa_mcp.geo.render import render_png, render_view
@@ -108,7 +112,7 @@ def test_cue_placement_follows_difficulty():
         steps = {graph[sp].steps_from_start for sp, _ in sign_at}
         if loc.difficulty == "easy":
             assert ("p0", "north") in sign_at, loc.id
-        elif loc.difficulty == "city":
+        elif loc.difficulty == "city" and not is_hard(loc):
             assert steps == {1}, loc.id
             for heading in COMPASS:  # no city-level cue anywhere at the start
                 spec = compose_view(loc, "p0", heading)
@@ -134,4 +138,134 @@ def test_country_cues_are_in_the_baseline_view():
 def test_landmark_views_describe_the_landmark():
     concorde = compose_view(LOCATIONS["g001"], "p0", "north")
     assert concorde.composition == "landmark" and "obelisk" in describe_view(concorde)
-    assert "RUE OBERKAMPF" in describe_view(compose_view(LOCATIONS["g002"], "p1", "east"))
+    signed = [spec for _sp, _h, spec in all_views(LOCATIONS["g002"]) if spec.street_sign is not None]
+    assert signed and all("RUE OBERKAMPF" in describe_view(spec) for spec in signed)
+
+
+def _deciding_city_cues(loc, spec, text) -> list[str]:
+    """The city-deciding cues a view shows (and its text quotes): an area-coded telephone number,
+    a legible regional number plate."""
+    found = []
+    if "{a}" in loc.country.phone:
+        found += [f"phone {s.phone}" for s in spec.shops if s.phone and f"'{s.phone}'" in text]
+    found += [f"plate {v.plate.text}" for v in spec.vehicles
+              if v.plate and v.plate.text and v.plate.style.has_region and v.plate.text in text]
+    return found
+
+
+def _transport_shown(spec, text) -> list[str]:
+    return [v.kind for v in spec.vehicles if v.kind != "car"
+            and VEHICLE_WORDS[v.kind].format(colour=v.colour_words).split(" {")[0][:12] in text]
+
+
+def test_every_baseline_view_carries_what_its_difficulty_promises():
+    """docs/geolocation.md, "Difficulty": the one view a baseline task has (p0 north) carries
+    the country cues always; the city cues for easy and street-level tasks (where the city has
+    one the street can show); a landmark and the street sign for easy tasks; only shared city
+    cues (buildings, trees, local transport) and never a deciding one for hard tasks."""
+    tasks = build_tasks("baseline")
+    assert len(tasks) == len(LOCATIONS_LIST)
+    for task in tasks:
+        loc = LOCATIONS[task.start.embodied.location_id]
+        spec = compose_view(loc, "p0", "north")
+        text = describe_view(spec)
+        where = f"{task.id} ({task.difficulty}, {task.metadata['cue_level']})"
+        # Country cues: a shop sign in a local language; on roads, the driving side.
+        words = {language(c).words[k][0] for c in (loc.city.langs or loc.country.langs)
+                 for k in language(c).words}
+        assert any(s.lines[0].native in words and f"'{s.lines[0].native}" in text for s in spec.shops), where
+        if not loc.pedestrian:
+            assert f"keeps to the {loc.country.drive}" in text or "traffic moves from your" in text, where
+        deciding = _deciding_city_cues(loc, spec, text)
+        showable = "{a}" in loc.country.phone or (
+            not loc.pedestrian and (loc.city.transport or (loc.city.plate_region and spec.composition == "along")))
+        if task.difficulty == "hard":
+            assert not deciding, f"{where} shows a deciding city cue: {deciding}"
+            assert spec.street_sign is None, where
+            assert f"Buildings: {spec.arch.description}" in text, where
+            if spec.trees:
+                assert TREE_WORDS[spec.trees[0][0]] in text, where
+            if loc.city.transport and not loc.pedestrian:
+                assert _transport_shown(spec, text), f"{where}: no local transport"
+            continue
+        if task.difficulty == "easy":
+            assert spec.landmark is not None and spec.street_sign is not None, where
+            assert spec.street_sign.lines[-1].native in text, where
+        if task.metadata["cue_level"] in ("easy", "street") and showable:
+            assert deciding or _transport_shown(spec, text), f"{where}: no city cue in the baseline view"
+        if task.metadata["cue_level"] == "city":
+            assert not deciding and spec.street_sign is None, where
+        if task.metadata["cue_level"] == "street":
+            assert spec.street_sign is None, where
+
+
+def test_hard_split_is_at_least_15_percent_and_no_single_cue_decides():
+    from collections import Counter
+
+    from ewa_mcp.geo.hardness import shared_cues
+
+    tasks = build_tasks("baseline") + build_tasks("embodied")
+    counts = Counter(t.difficulty for t in tasks)
+    assert set(counts) == {"easy", "medium", "hard"} and counts["hard"] >= 0.15 * len(tasks), counts
+    cities = {loc.city_key: loc.city for loc in LOCATIONS_LIST}
+    for loc in LOCATIONS_LIST:
+        if not is_hard(loc):
+            continue
+        mine = shared_cues(loc.city)
+        for name, value in mine.items():  # each cue is some other city's too ...
+            assert not value or any(shared_cues(c)[name] == value for k, c in cities.items() if k != loc.city_key)
+        rivals = [c for k, c in cities.items() if c.iso == loc.city.iso and k != loc.city_key]
+        assert rivals and all(shared_cues(c) != mine for c in rivals), loc.id  # ... together they decide
+        for sp in build_graph(loc):  # and no view anywhere shows a deciding cue
+            for heading in COMPASS:
+                spec = compose_view(loc, sp, heading)
+                assert not _deciding_city_cues(loc, spec, describe_view(spec)), (loc.id, sp, heading)
+                assert spec.street_sign is None or spec.street_sign.style == loc.country.sign
+
+
+# What a building style's words name must be drawn (issue 16: images showed generic buildings
+# where the text said "grey sandstone, soot-darkened, chimney stacks").
+DRAWN_FEATURES = {
+    r"\bchimney": lambda a: a.chimneys,
+    r"\bsoot": lambda a: a.soot,
+    r"\bdormers?\b": lambda a: a.dormers and a.roof == "mansard",
+    r"\bshutters\b": lambda a: a.shutters is not None,
+    r"\bsash windows|\bstucco window frames": lambda a: a.window_frame is not None,
+    r"\bfire escapes": lambda a: a.fire_escapes,
+    r"\bwater tanks": lambda a: a.water_tanks,
+    r"\bcorrugated-iron roofs": lambda a: a.corrugated,
+    r"\bbrick\b": lambda a: a.material == "brick" or bool(a.brick_colours),
+    r"\b(sandstone|limestone|stone buildings|stone blocks|beige stone)\b": lambda a: a.material == "stone",
+    r"\bwooden townhouses|\btimber\b": lambda a: a.material == "wood",
+    r"\bconcrete\b": lambda a: a.material in ("concrete", "glass", "stone", "wood"),
+    r"\bglazed blue-and-white tiles": lambda a: bool(a.tiled_colours),
+    r"^glass and steel": lambda a: a.material == "glass",
+}
+
+
+def test_every_feature_a_building_description_names_is_drawn():
+    from ewa_mcp.geo.styles import ARCH
+
+    for key, arch in ARCH.items():
+        for pattern, drawn in DRAWN_FEATURES.items():
+            if re.search(pattern, arch.description):
+                assert drawn(arch), f"{key}: the text says {pattern!r} but the style does not draw it"
+
+
+@pytest.mark.parametrize("feature", ["chimneys", "soot", "material", "water_tanks", "fire_escapes", "shutters"])
+@pytest.mark.parametrize("composition", ["facade", "along"])
+def test_drawn_features_change_the_picture(feature, composition):
+    import dataclasses
+
+    from ewa_mcp.geo.styles import ARCH
+
+    owner = {"chimneys": "stone_terrace", "soot": "stone_terrace", "material": "british",
+             "water_tanks": "middle_eastern", "fire_escapes": "na_downtown", "shutters": "mediterranean"}[feature]
+    if composition == "along" and feature in ("fire_escapes", "shutters"):
+        pytest.skip("drawn on front-on facades only")
+    spec = next(s for loc in LOCATIONS_LIST for _sp, _h, s in all_views(loc)
+                if s.arch_key == owner and s.composition == composition)
+    off = {"material": "plaster", "shutters": None}.get(feature, False)
+    plain = dataclasses.replace(spec, arch=dataclasses.replace(ARCH[owner], **{feature: off}))
+    with_it, without = render_view(spec), render_view(plain)
+    assert with_it.tobytes() != without.tobytes(), f"{owner} {composition}: {feature} draws nothing"
