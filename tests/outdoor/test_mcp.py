@@ -55,7 +55,7 @@ async def test_walk_to_a_store_over_mcp(tmp_path, world, street_only):
         r = await c.call_tool("street_stop", {"episode_id": ep})
         assert not r.is_error
         r = await c.call_tool("street_move", {"episode_id": ep, "direction": "forward"})
-        assert r.is_error and "already stopped" in r.content[0].text
+        assert r.is_error and "the walk is over" in r.content[0].text
         r = await c.call_tool("finish_episode", {"episode_id": ep})
         assert not r.is_error
     final = json.loads((tmp_path / "run" / ep / "final_state.json").read_text())

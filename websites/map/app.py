@@ -39,6 +39,11 @@ def walking_minutes(duration_s: float) -> int:
     return max(1, math.ceil(duration_s / 60))
 
 
+def record_id(place: Any) -> str:
+    """The id a site event records for a place: an address place's point of interest, else its own id."""
+    return getattr(place, "refers_to", None) or place.id
+
+
 def create_app(ctx: SiteContext, world: Any = None) -> Starlette:
     """``world`` defaults to the process-wide outdoor world, loaded in the background from here on."""
     templates = make_templates(SITE_DIR, ctx, "map")
@@ -121,7 +126,9 @@ def create_app(ctx: SiteContext, world: Any = None) -> Starlette:
         except ValueError as exc:  # WorldError: e.g. no connected walking route
             context["errors"].append(str(exc))
             return render(request, "directions.html", status=422, **context)
-        emit(request, "directions", origin=origin.id, destination=destination.id, city=route.city,
+        # An address stands for the place there in the record (a task may name it either way); the page
+        # itself shows only the address.
+        emit(request, "directions", origin=record_id(origin), destination=record_id(destination), city=route.city,
              distance_m=route.distance_m)
         coords = places.route_coordinates(route)
         svg = render_map_svg(
