@@ -86,7 +86,7 @@ class Place:
 
 @dataclass
 class DirectionStep:
-    maneuver: str  # depart, continue, slight/turn/sharp left/right, u-turn (walking back), arrive
+    maneuver: str  # depart, continue, slight/turn/sharp left/right, u-turn (walking back), waypoint, arrive
     street: str
     distance_m: float
     instruction: str
@@ -463,6 +463,22 @@ class World:
         distance = round(sum(s.distance_m for s in steps), 1)
         return Directions(city=g1.city, origin=origin, destination=destination, nodes=[g1.ids[i] for i in path],
                           distance_m=distance, duration_s=round(distance / WALKING_SPEED_MPS, 1), steps=steps)
+
+
+def directions_via(world: "World", origin: str, via: str, destination: str) -> Directions:
+    """Walking directions from origin to destination that pass a waypoint: the two shortest legs joined,
+    the first leg's arrival becoming a 'Pass ...' step (maneuver 'waypoint')."""
+    first, second = world.directions(origin, via), world.directions(via, destination)
+    g, _, via_place = world.resolve(via)
+    arrive = first.steps[-1]
+    name = via_place.name if via_place is not None else "the waypoint"
+    side = arrive.instruction.removeprefix(f"Arrive at {name}").removesuffix(".")
+    passing = DirectionStep("waypoint", arrive.street, 0.0, f"Pass {name}{side}, then go on.", arrive.start_node,
+                            arrive.end_node, arrive.heading)
+    legs = first.steps[:-1] + [passing] + second.steps
+    distance = round(first.distance_m + second.distance_m, 1)
+    return Directions(city=first.city, origin=origin, destination=destination, nodes=first.nodes + second.nodes[1:],
+                      distance_m=distance, duration_s=round(distance / WALKING_SPEED_MPS, 1), steps=legs)
 
 
 def _same_address(address: str, number: int, street: str, aliases: dict[str, str]) -> bool:

@@ -237,3 +237,17 @@ def test_events_carry_the_episode(sink, world):
     TestClient(app, headers={"X-EWA-Episode": "ep-2"}).get("/directions", params={"from": FLATIRON, "to": TARGET})
     TestClient(app).get("/directions", params={"from": FLATIRON, "to": TARGET})
     assert [ep for ep, e in sink.events if e["type"] == "directions"] == ["ep-2", "anonymous"]
+
+
+def test_directions_via_a_waypoint_pass_it_and_record_both_legs(client, sink, world):
+    from ewa_mcp.outdoor.world import directions_via
+
+    esb = "poi-manhattan-empire-state-building"
+    html = client.get("/directions", params={"from": FLATIRON, "via": "Empire State Building", "to": TARGET}).text
+    route = directions_via(world, FLATIRON, esb, TARGET)
+    steps = steps_on_page(html)
+    assert steps == [str(escape(s.instruction)) for s in route.steps]
+    assert any(s.startswith("Pass Empire State Building") for s in steps)
+    assert route.nodes[: len(world.directions(FLATIRON, esb).nodes)] == world.directions(FLATIRON, esb).nodes
+    assert [(e["origin"], e["destination"]) for e in sink.of("directions")] == [(FLATIRON, esb), (esb, TARGET)]
+    assert "via=" in re.search(r'<a href="(/directions\?[^"]+)">Reverse the route', html).group(1)
