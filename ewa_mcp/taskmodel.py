@@ -115,7 +115,8 @@ class ObjectIn(_Strict):
 
 
 class ReachedPlace(_Strict):
-    """Embodied (street): the agent stopped within ``radius_m`` of the target."""
+    """Embodied (street): the walk ended (at the first street_stop, else when the episode finished)
+    within ``radius_m`` of the target."""
 
     kind: Literal["reached_place"] = "reached_place"
     city: str
@@ -128,8 +129,20 @@ class ReachedPlace(_Strict):
     must_match_order_store: bool = False
 
 
+class PassedPlace(_Strict):
+    """Embodied (street): the walk passed within ``radius_m`` of a waypoint before it ended."""
+
+    kind: Literal["passed_place"] = "passed_place"
+    city: str
+    node: str
+    lat: float
+    lng: float
+    radius_m: float = 25.0
+    place_id: str | None = None
+
+
 WebGoal = Annotated[RecipeCompleted | OrderPlaced | DirectionsShown | PageVisited, Field(discriminator="kind")]
-EmbodiedGoal = Annotated[ObjectState | ObjectIn | ReachedPlace, Field(discriminator="kind")]
+EmbodiedGoal = Annotated[ObjectState | ObjectIn | ReachedPlace | PassedPlace, Field(discriminator="kind")]
 
 
 # ---------------------------------------------------------------- answers

@@ -9,7 +9,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from ewa_mcp.taskmodel import GeoAnswer, ObjectIn, ObjectState, OrderPlaced, ReachedPlace, TextAnswer
+from ewa_mcp.taskmodel import GeoAnswer, ObjectIn, ObjectState, OrderPlaced, PassedPlace, ReachedPlace, TextAnswer
 
 from . import kitchen, street, web
 from .answers import check_geo_answer, check_text_answer
@@ -72,7 +72,7 @@ def _embodied_conditions(
             unknown = why_missing
         elif isinstance(goal, ObjectState | ObjectIn) and not isinstance(state.get("objects"), list):
             unknown = f"the embodied final state ({state.get('name', '?')}) has no kitchen object list"
-        elif isinstance(goal, ReachedPlace) and "lat" not in state and "node" not in state:
+        elif isinstance(goal, ReachedPlace | PassedPlace) and "lat" not in state and "node" not in state:
             unknown = f"the embodied final state ({state.get('name', '?')}) has no street position"
         if unknown is not None or state is None:
             conditions.append(ConditionResult(side="embodied", kind=goal.kind, description=goal.kind, met=None,
@@ -85,6 +85,8 @@ def _embodied_conditions(
             condition, nav = street.check_reached_place(goal, state, task.metadata, orders, radius_m)
             conditions.append(condition)
             navigation.append(nav)
+        elif isinstance(goal, PassedPlace):
+            conditions.append(street.check_passed_place(goal, state, radius_m))
     return conditions, navigation
 
 

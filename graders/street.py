@@ -1,8 +1,9 @@
-"""Street goals: did the agent stop near the goal, and how efficiently did it walk there.
+"""Street goals: did the walk end near the goal (and pass its waypoints), and how efficiently.
 
-Success is "stopped within the radius" (default 25 m), not the reference's exact node: street
-graphs have nodes every 10–25 m, so stopping one panorama short of the door is an arrival.
-Exact-node arrival, distance to goal and SPL are reported beside it.
+The walk ends at the first street_stop, or else when the episode finishes; success is "the walk
+ended within the radius" (default 25 m), not the reference's exact node: street graphs have nodes
+every 10–25 m, so ending one panorama short of the door is an arrival. Exact-node arrival, distance
+to goal, whether the agent stopped explicitly and SPL are reported beside it.
 """
 
 from __future__ import annotations
@@ -10,7 +11,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from ewa_mcp.taskmodel import ReachedPlace
+from ewa_mcp.taskmodel import PassedPlace, ReachedPlace
 
 from .models import ConditionResult, NavigationResult
 
@@ -57,6 +58,35 @@ def order_store_check(goal: ReachedPlace, metadata: dict[str, Any], orders: list
     return False, f"the goal is not the pickup store of the order (ordered at {stores})"
 
 
+def walk_end(state: dict[str, Any]) -> tuple[float | None, float | None, Any]:
+    """Where the walk ended: the final state's walk_end (the stop position if stopped), else its position."""
+    end = state.get("walk_end")
+    source = end if isinstance(end, dict) else state
+    return _number(source.get("lat")), _number(source.get("lng")), source.get("node")
+
+
+def check_passed_place(goal: PassedPlace, state: dict[str, Any], radius_override: float | None) -> ConditionResult:
+    """A waypoint: some node of the walk (path_points, up to where the walk ended) within the radius."""
+    radius = radius_override if radius_override is not None else goal.radius_m
+    description = f"pass within {radius:g} m of {goal.place_id or goal.node} ({goal.city})"
+    points = state.get("path_points")
+    if state.get("city") not in (None, goal.city):
+        return ConditionResult(side="embodied", kind=goal.kind, description=description, met=False,
+                               note=f"the agent is in {state.get('city')}, the waypoint in {goal.city}")
+    if not isinstance(points, list):
+        return ConditionResult(side="embodied", kind=goal.kind, description=description, met=None,
+                               note="the final state has no path_points, so the walk's course is unknown")
+    distances = [haversine_m(lat, lng, goal.lat, goal.lng) for lat, lng in
+                 ((_number(p[0]), _number(p[1])) for p in points if isinstance(p, list | tuple) and len(p) == 2)
+                 if lat is not None and lng is not None]
+    closest = min(distances) if distances else None
+    met = closest is not None and closest <= radius
+    note = None if met else ("the walk has no positions" if closest is None else
+                             f"the walk came no closer than {closest:.0f} m to the waypoint (radius {radius:g} m)")
+    return ConditionResult(side="embodied", kind=goal.kind, description=description, met=met,
+                           detail={"closest_m": round(closest, 2) if closest is not None else None}, note=note)
+
+
 def check_reached_place(
     goal: ReachedPlace,
     state: dict[str, Any],
@@ -65,21 +95,20 @@ def check_reached_place(
     radius_override: float | None,
 ) -> tuple[ConditionResult, NavigationResult]:
     radius = radius_override if radius_override is not None else goal.radius_m
-    lat, lng = _number(state.get("lat")), _number(state.get("lng"))
+    lat, lng, end_node = walk_end(state)
     same_city = state.get("city") in (None, goal.city)
     distance = haversine_m(lat, lng, goal.lat, goal.lng) if lat is not None and lng is not None and same_city else None
-    stopped = state.get("stopped") is True
+    stopped = state.get("walk_stopped", state.get("stopped")) is True
     within = distance is not None and distance <= radius
-    success = stopped and within
+    success = within  # the walk ends at the first street_stop, or else when the episode finishes
     notes: list[str] = []
     if not same_city:
         notes.append(f"the agent is in {state.get('city')}, the goal in {goal.city}")
     elif distance is None:
         notes.append("the final state has no position")
-    if not stopped:
-        notes.append("the agent never stopped (street_stop)")
-    elif not within and distance is not None:
-        notes.append(f"stopped {distance:.0f} m from the goal (radius {radius:g} m)")
+    if not within and distance is not None:
+        how = "stopped" if stopped else "never stopped (street_stop); the walk ended when the episode finished,"
+        notes.append(f"{how} {distance:.0f} m from the goal (radius {radius:g} m)")
     if goal.must_match_order_store:
         store_ok, why = order_store_check(goal, metadata, orders)
         if not store_ok:
@@ -93,19 +122,19 @@ def check_reached_place(
         spl = (shortest / max(walked, shortest) if max(walked, shortest) > 0 else 1.0) if success else 0.0
     nav = NavigationResult(
         goal_node=goal.node,
-        final_node=state.get("node") if isinstance(state.get("node"), str) else None,
+        final_node=end_node if isinstance(end_node, str) else None,
         stopped=stopped,
         radius_m=radius,
         distance_to_goal_m=round(distance, 2) if distance is not None else None,
         within_radius=within,
-        exact_node=state.get("node") == goal.node and same_city,
+        exact_node=end_node == goal.node and same_city,
         success=success,
         shortest_path_m=round(shortest, 2) if shortest is not None else None,
         shortest_path_source=source,  # type: ignore[arg-type]
         path_length_m=walked,
         spl=round(spl, 4) if spl is not None else None,
     )
-    description = f"stop within {radius:g} m of {goal.place_id or goal.node} ({goal.city})"
+    description = f"end the walk within {radius:g} m of {goal.place_id or goal.node} ({goal.city})"
     condition = ConditionResult(
         side="embodied", kind=goal.kind, description=description, met=success,
         detail={"distance_to_goal_m": nav.distance_to_goal_m, "stopped": stopped, "exact_node": nav.exact_node},

@@ -18,7 +18,8 @@ from .hardness import task_difficulty
 from .locations import LOCATIONS_LIST, Location
 
 SETTINGS = ("baseline", "embodied")
-STEP_LIMITS = {"baseline": 5, "embodied": 40}
+# Every call is a step (looks and wiki reading too), so the baseline has room to look once and read the wiki.
+STEP_LIMITS = {"baseline": 10, "embodied": 40}
 FILE_NAMES = {setting: f"geolocation-{setting}.json" for setting in SETTINGS}
 
 INTENTS = {

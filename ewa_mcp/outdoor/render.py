@@ -22,7 +22,7 @@ from PIL import Image, ImageDraw, ImageFont
 
 from .scene import Frontage, Scene
 
-WIDTH, HEIGHT = 320, 220
+WIDTH, HEIGHT = 480, 330  # large enough for a lion by a door or a clock on a tower to read
 CAMERA_HEIGHT_M = 1.7
 FACADE_X_M = 11.0  # half the distance between facades across a typical street
 ROAD_HALF_M = 6.5
@@ -154,6 +154,112 @@ def draw_facade(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], styl
         draw.polygon([(tx1, ty1), (mx + 2, my - near_h * 0.15), (mx + 2, my)], fill=trim)
 
 
+# Details a place's description mentions, drawn on its facade (first matching word wins per detail).
+DETAIL_WORDS = {
+    "lions": ("lion",), "clock": ("clock",), "dome": ("dome",), "statue": ("statue", "figure"),
+    "spire": ("spire", "steeple", "pointed"), "columns": ("column", "colonnade", "portico"),
+    "arch": ("arched", "arches", "archway"), "steps": ("steps", "stairs", "stairway", "staircase"),
+    "neon": ("neon",), "awning": ("awning", "canopy", "marquee"), "lamps": ("globe lamp", "lamps"),
+    "trees": ("tree", "park", "garden", "lawn"), "twin": ("twin",), "flags": ("flag",),
+}
+GOLD, BRONZE, NEON, LION = (212, 175, 55), (140, 100, 50), (255, 60, 90), (222, 214, 196)
+
+
+def details_of(hint: str) -> set[str]:
+    text = hint.lower()
+    return {name for name, words in DETAIL_WORDS.items() if any(w in text for w in words)}
+
+
+def draw_details(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], hint: str) -> None:
+    """Draw on a facade quadrilateral the visible details its description names (lions by the door, a
+    clock, a dome, a statue on top, a spire, columns, an arched door, steps, neon, an awning, globe
+    lamps, trees, twin towers, flags), so a vision agent sees what the text tells."""
+    found = details_of(hint)
+    if not found:
+        return
+    (bx0, by0), (tx0, ty0), (tx1, ty1), (bx1, by1) = quad
+    near_h = by0 - ty0
+    if near_h < 6:
+        return
+
+    def at(t: float, u: float) -> tuple[float, float]:  # t along the facade (0 near), u up (0 ground)
+        bx, by = bx0 + (bx1 - bx0) * t, by0 + (by1 - by0) * t
+        tx, ty = tx0 + (tx1 - tx0) * t, ty0 + (ty1 - ty0) * t
+        return bx + (tx - bx) * u, by + (ty - by) * u
+
+    def height_at(t: float) -> float:
+        return (by0 + (by1 - by0) * t) - (ty0 + (ty1 - ty0) * t)
+
+    mid = 0.5
+    h = height_at(mid)
+    unit = max(2.0, h / 12)  # about one floor
+    if "columns" in found:
+        for k in range(7):
+            t = 0.15 + 0.7 * k / 6
+            draw.line([at(t, 0.02), at(t, 0.45)], fill=(245, 242, 232), width=max(2, int(unit * 0.5)))
+        draw.polygon([at(0.12, 0.45), at(0.88, 0.45), at(mid, 0.58)], fill=(236, 232, 220), outline=(120, 120, 120))
+    if "arch" in found or "lions" in found or "steps" in found:
+        x, y = at(mid, 0.0)
+        draw.rectangle([x - unit * 1.2, y - unit * 2.2, x + unit * 1.2, y], fill=(40, 36, 34))
+        draw.ellipse([x - unit * 1.2, y - unit * 3.4, x + unit * 1.2, y - unit * 1.0], fill=(40, 36, 34))
+    if "steps" in found:
+        x, y = at(mid, 0.0)
+        for k in range(3):
+            draw.rectangle([x - unit * (3 - k * 0.5), y - unit * 0.3 * (k + 1), x + unit * (3 - k * 0.5),
+                            y - unit * 0.3 * k], fill=(214, 208, 196), outline=(150, 146, 138))
+    if "lions" in found:
+        for t in (mid - 0.16, mid + 0.16):  # two couchant lions on plinths either side of the door
+            x, y = at(t, 0.0)
+            s = unit * 0.9
+            draw.rectangle([x - s * 1.6, y - s * 0.8, x + s * 1.6, y], fill=(200, 196, 186))
+            draw.ellipse([x - s * 1.5, y - s * 2.0, x + s * 1.1, y - s * 0.8], fill=LION)
+            draw.ellipse([x + s * 0.4, y - s * 2.6, x + s * 1.6, y - s * 1.3], fill=LION,
+                         outline=(120, 110, 96))  # the head with its mane
+    if "lamps" in found:
+        for t in (0.2, 0.8):
+            x, y = at(t, 0.0)
+            draw.line([(x, y), (x, y - unit * 3)], fill=(30, 60, 40), width=2)
+            draw.ellipse([x - unit * 0.6, y - unit * 3.9, x + unit * 0.6, y - unit * 2.7], fill=(120, 220, 140))
+    if "awning" in found:
+        a, b = at(0.1, 0.2), at(0.9, 0.2)
+        draw.polygon([a, b, (b[0], b[1] + unit), (a[0], a[1] + unit)], fill=(170, 30, 40), outline=(90, 10, 20))
+    if "neon" in found:
+        a, b = at(0.2, 0.7), at(0.8, 0.7)
+        draw.line([a, b], fill=NEON, width=max(2, int(unit * 0.6)))
+        draw.line([at(0.2, 0.78), at(0.8, 0.78)], fill=(80, 220, 255), width=max(2, int(unit * 0.4)))
+    if "clock" in found:
+        x, y = at(mid, 0.8)
+        r = max(3.0, unit * 1.3)
+        draw.ellipse([x - r, y - r, x + r, y + r], fill=(246, 242, 226), outline=GOLD, width=2)
+        draw.line([(x, y), (x, y - r * 0.8)], fill=(20, 20, 20), width=2)
+        draw.line([(x, y), (x + r * 0.55, y)], fill=(20, 20, 20), width=2)
+    if "flags" in found:
+        for t in (0.3, 0.7):
+            x, y = at(t, 0.62)
+            draw.line([(x, y), (x + unit * 2, y - unit)], fill=(60, 60, 60), width=1)
+            draw.rectangle([x + unit * 1.2, y - unit * 1.8, x + unit * 2.4, y - unit * 1.0], fill=(30, 60, 160))
+    top_x, top_y = at(mid, 1.0)
+    if "twin" in found:
+        for t in (0.25, 0.75):
+            x, y = at(t, 1.0)
+            draw.rectangle([x - unit * 1.2, y - unit * 4, x + unit * 1.2, y], fill=(190, 180, 160), outline=(90, 90, 90))
+    if "dome" in found:
+        r = max(4.0, unit * 2.5)
+        draw.pieslice([top_x - r, top_y - r, top_x + r, top_y + r], 180, 360, fill=(110, 150, 130), outline=(60, 80, 70))
+        top_y -= r
+    if "spire" in found:
+        draw.polygon([(top_x - unit, top_y), (top_x + unit, top_y), (top_x, top_y - unit * 6)], fill=(96, 92, 88))
+        top_y -= unit * 6
+    if "statue" in found:
+        draw.rectangle([top_x - unit * 0.5, top_y - unit * 2.2, top_x + unit * 0.5, top_y], fill=BRONZE)
+        draw.ellipse([top_x - unit * 0.45, top_y - unit * 3.0, top_x + unit * 0.45, top_y - unit * 2.1], fill=BRONZE)
+    if "trees" in found:
+        for t in (0.15, 0.45, 0.75):
+            x, y = at(t, 0.0)
+            draw.line([(x, y), (x, y - unit * 2.5)], fill=(90, 60, 40), width=max(2, int(unit * 0.4)))
+            draw.ellipse([x - unit * 1.8, y - unit * 5.5, x + unit * 1.8, y - unit * 2.0], fill=(60, 130, 60))
+
+
 def _sky_and_ground(img: Image.Image, draw: ImageDraw.ImageDraw, cam: Camera) -> None:
     h = int(cam.horizon)
     for y in range(0, h + 1, 4):
@@ -239,7 +345,8 @@ def render(scene: Scene, cam: Camera | None = None) -> Image.Image:
         if far < AHEAD_END_WALL:
             _end_wall(draw, cam, far + 12, rng)
     else:
-        _end_wall(draw, cam, 14.0, rng)
+        facing = next((f for f in scene.frontages if f.side == "ahead" and f.range_m <= 40), None)
+        _end_wall(draw, cam, 14.0, rng, facing)
     # Facades, far to near, both sides.
     landmarks: dict[str, list[Frontage]] = {"left": [], "right": []}
     for f in scene.frontages:
@@ -251,7 +358,8 @@ def render(scene: Scene, cam: Camera | None = None) -> Image.Image:
             z = z0
             while z < z1:
                 w = min(z1 - z, rng.uniform(12, 26))
-                lm = next((f for f in landmarks[side] if f.style and z - 10 <= f.distance_m <= z + w + 10), None)
+                lm = next((f for f in landmarks[side] if (f.style or details_of(f.hint))
+                           and z - 10 <= f.distance_m <= z + w + 10), None)
                 pieces.append((z, side, z, z + w, lm))
                 z += w
     for _, side, z0, z1, lm in sorted(pieces, key=lambda p: -p[0]):
@@ -259,6 +367,8 @@ def render(scene: Scene, cam: Camera | None = None) -> Image.Image:
         height = rng.uniform(12, 40) if lm is None else min(80.0, max(18.0, (lm.height_m or 30.0)))
         quad = [cam.project(x, 0, z0), cam.project(x, height, z0), cam.project(x, height, z1), cam.project(x, 0, z1)]
         draw_facade(draw, quad, lm.style if lm else "", rng, floors=max(3, int(height / 4)))
+        if lm is not None:
+            draw_details(draw, quad, lm.hint)
     for f in sorted(scene.frontages, key=lambda f: -f.distance_m):
         if f.sign and f.side in ("left", "right"):
             _draw_sign(draw, cam, f.side, f.distance_m, f.sign, _sign_colour(f.sign))
@@ -269,9 +379,14 @@ def render(scene: Scene, cam: Camera | None = None) -> Image.Image:
     return img
 
 
-def _end_wall(draw: ImageDraw.ImageDraw, cam: Camera, z: float, rng: random.Random) -> None:
+def _end_wall(draw: ImageDraw.ImageDraw, cam: Camera, z: float, rng: random.Random,
+              facing: Frontage | None = None) -> None:
+    """The building fronts across the end of the view; the place straight ahead, if any, in its style."""
     quad = [cam.project(-60, 0, z), cam.project(-60, 28, z), cam.project(60, 28, z), cam.project(60, 0, z)]
-    draw_facade(draw, [quad[0], quad[1], quad[2], quad[3]], "", rng, floors=7)
+    draw_facade(draw, [quad[0], quad[1], quad[2], quad[3]], facing.style if facing else "", rng, floors=7)
+    if facing is not None:
+        front = [cam.project(-14, 0, z), cam.project(-14, 22, z), cam.project(14, 22, z), cam.project(14, 0, z)]
+        draw_details(draw, front, facing.hint)
 
 
 def _street_sign(draw: ImageDraw.ImageDraw, cam: Camera, names: list[str]) -> None:
@@ -288,6 +403,6 @@ def _street_sign(draw: ImageDraw.ImageDraw, cam: Camera, names: list[str]) -> No
 def render_png(scene: Scene, cam: Camera | None = None) -> bytes:
     buf = io.BytesIO()
     # A small adaptive palette keeps each view around 10-20 KB without visible banding.
-    render(scene, cam).quantize(colors=128, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE).save(
+    render(scene, cam).quantize(colors=128, method=Image.Quantize.FASTOCTREE, dither=Image.Dither.NONE).save(
         buf, format="PNG", optimize=False)
     return buf.getvalue()

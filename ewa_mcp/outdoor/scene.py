@@ -21,13 +21,20 @@ SKYLINE_MIN_HEIGHT_M = 120.0
 AHEAD_LOOK_M = 250.0
 SIGN_KINDS = {"store", "restaurant", "shop", "station", "market"}  # kinds whose name is on a sign
 FACADE_KINDS = {"landmark", "church", "museum", "library", "hotel", "theater", "market", "station"}
+# A place is seen where its entrance is: on the street front of the node it is attached to, this far
+# towards the building (at most). Building centroids can lie 80 m inside a large block; measuring to
+# them made a landmark's distance stay put while the agent walked past it.
+ENTRANCE_SETBACK_M = 10.0
+METRES_PER_DEGREE = 111_320.0
 
 
 @dataclass
 class Frontage:
     side: str  # left, right or ahead
-    distance_m: float  # distance along the view direction
+    distance_m: float  # distance along the view direction (the renderer's depth)
     lateral_m: float  # distance to the side of the view axis
+    range_m: float  # straight-line distance from the agent to the entrance (what the text says)
+    rel_angle: float  # degrees right of the view centre
     kind: str
     sign: str | None  # the shop sign's text; None for landmarks (their names are not painted)
     style: str  # architectural style or "" (drives the facade drawing)
@@ -73,6 +80,41 @@ def _style(p: Place) -> str:
     return str(p.facts.get("architectural_style", "")) if p.kind in FACADE_KINDS else ""
 
 
+def entrance(world: World, p: Place) -> tuple[float, float]:
+    """Where a place meets its street: a few metres from its node towards the building (cached)."""
+    cache: dict[str, tuple[float, float]] = world.__dict__.setdefault("_entrances", {})
+    if p.id not in cache:
+        node = world.node(p.node)
+        d = min(p.offset_m, ENTRANCE_SETBACK_M) if p.heading_from_node is not None else 0.0
+        h = math.radians(p.heading_from_node or 0.0)
+        cache[p.id] = (node.lat + d * math.cos(h) / METRES_PER_DEGREE,
+                       node.lng + d * math.sin(h) / (METRES_PER_DEGREE * math.cos(math.radians(node.lat))))
+    return cache[p.id]
+
+
+def what_is_seen(kind: str, sign: str | None, hint: str) -> str:
+    """A place in words: a shop's sign, else (and also) its look; never a landmark's name."""
+    what = f'a sign reading "{sign}" ({kind})' if sign else hint.rstrip(".").lower()
+    if sign and hint:
+        what += f" — {hint.rstrip('.').lower()}"
+    return what
+
+
+def places_here(world: World, graph: CityGraph, i: int, heading: float) -> list[str]:
+    """Sentences for the places whose entrance is at this very node, with the side they are on."""
+    out = []
+    for p in sorted(world.places_near(graph.ids[i]), key=lambda p: p.id):
+        if p.heading_from_node is None:
+            side = "beside you"
+        else:
+            rel = angle_diff(p.heading_from_node, heading)
+            side = ("ahead of you" if abs(rel) <= 30 else "behind you" if abs(rel) >= 150
+                    else "on your right" if rel > 0 else "on your left")
+        what = what_is_seen(p.kind, p.name if p.kind in SIGN_KINDS else None, p.description_hint)
+        out.append(f"{side}, {what}.")
+    return out
+
+
 def compute_scene(world: World, graph: CityGraph, i: int, heading: float, label: str) -> Scene:
     node_id = graph.ids[i]
     seed = int(hashlib.sha1(f"{node_id}:{round(heading) % 360}".encode()).hexdigest()[:8], 16)
@@ -106,24 +148,30 @@ def compute_scene(world: World, graph: CityGraph, i: int, heading: float, label:
     for p in world.places.values():
         if p.city != graph.city or abs(p.lat - lat0) > 0.015 or abs(p.lng - lng0) > 0.02:
             continue
-        d = haversine_m(lat0, lng0, p.lat, p.lng)
+        # Near places are measured to their entrance on the street, far ones (the skyline) to the building.
+        elat, elng = entrance(world, p)
+        d = haversine_m(lat0, lng0, elat, elng)
+        far = d > NEAR_RANGE_M
+        if far:
+            elat, elng = p.lat, p.lng
+            d = haversine_m(lat0, lng0, elat, elng)
         if d < 1.0:
             continue
-        rel = angle_diff(bearing_deg(lat0, lng0, p.lat, p.lng), heading)
+        rel = angle_diff(bearing_deg(lat0, lng0, elat, elng), heading)
         if abs(rel) > VIEW_HALF_ANGLE:
             continue
         along = d * math.cos(math.radians(rel))
         lateral = d * math.sin(math.radians(rel))
         height = p.facts.get("height_m")
-        if d <= NEAR_RANGE_M:
+        if not far:
             side = "ahead" if abs(rel) < 8.0 else ("right" if rel > 0 else "left")
-            scene.frontages.append(Frontage(side, round(max(along, 3.0), 1), round(abs(lateral), 1), p.kind,
-                                            p.name if p.kind in SIGN_KINDS else None, _style(p),
-                                            float(height) if height else None, p.description_hint, p.id))
+            scene.frontages.append(Frontage(side, round(max(along, 3.0), 1), round(abs(lateral), 1), round(d, 1),
+                                            round(rel, 1), p.kind, p.name if p.kind in SIGN_KINDS else None,
+                                            _style(p), float(height) if height else None, p.description_hint, p.id))
         elif height and float(height) >= SKYLINE_MIN_HEIGHT_M and d <= SKYLINE_RANGE_M and abs(rel) <= 40.0:
             scene.skyline.append(SkylineItem(round(rel, 1), round(d, 1), float(height), _style(p),
                                              p.description_hint, p.id))
-    scene.frontages.sort(key=lambda f: f.distance_m)
+    scene.frontages.sort(key=lambda f: f.range_m)
     scene.skyline.sort(key=lambda s: -s.distance_m)
     streets = graph.node_streets[i]
     if len(streets) >= 2:
@@ -145,10 +193,7 @@ def describe(scene: Scene) -> str:
         parts.append("No street continues this way: a row of building fronts across the sidewalk.")
     for f in scene.frontages[:5]:
         where = "straight ahead" if f.side == "ahead" else f"on the {f.side}"
-        what = f'a sign reading "{f.sign}" ({f.kind})' if f.sign else f.hint.rstrip(".").lower()
-        if f.sign and f.hint:
-            what += f" — {f.hint.rstrip('.').lower()}"
-        parts.append(f"{where.capitalize()}, {int(round(f.distance_m))} m: {what}.")
+        parts.append(f"{where.capitalize()}, {int(round(f.range_m))} m away: {what_is_seen(f.kind, f.sign, f.hint)}.")
     for s in sorted(scene.skyline, key=lambda s: s.distance_m)[:2]:
         side = "slightly right" if s.rel_angle > 10 else "slightly left" if s.rel_angle < -10 else "straight ahead"
         parts.append(f"On the skyline {side}, about {int(round(s.distance_m, -2))} m away: {s.hint.rstrip('.').lower()}.")

@@ -34,6 +34,9 @@ WALKING_SPEED_MPS = 1.4
 # that among equally short grid routes the one with the fewest turns wins, as a map service would.
 TURN_PENALTY_M = 25.0
 EXTRA_DATA_ENV = "EWA_STREET_DATA"
+# Ids of street-address places: "address:<city>:<number> <street>". An address is its own place: it
+# never turns into the name of the building there (a traveling task's address must not name its landmark).
+ADDRESS_ID_PREFIX = "address:"
 
 
 class WorldError(ValueError):
@@ -73,6 +76,9 @@ class Place:
     description_hint: str = ""
     heading_from_node: float | None = None  # which way the place lies from its street node
     offset_m: float = 0.0
+    # An address place: the point of interest at that address, for site records (events) only; pages
+    # never show it.
+    refers_to: str | None = None
 
     def to_dict(self) -> dict[str, Any]:
         return asdict(self)
@@ -80,7 +86,7 @@ class Place:
 
 @dataclass
 class DirectionStep:
-    maneuver: str  # depart, continue, slight left/right, turn left/right, u-turn, arrive
+    maneuver: str  # depart, continue, slight/turn/sharp left/right, u-turn (walking back), waypoint, arrive
     street: str
     distance_m: float
     instruction: str
@@ -295,6 +301,8 @@ class World:
     def place(self, place_id: str) -> Place | None:
         if place_id in self.places:
             return self.places[place_id]
+        if place_id.startswith(ADDRESS_ID_PREFIX):
+            return self._address_place(place_id)
         try:
             graph, i = self.locate(place_id)
         except WorldError:
@@ -302,6 +310,13 @@ class World:
         streets = graph.node_streets[i]
         return Place(id=place_id, name=" & ".join(streets), kind="intersection" if len(streets) > 1 else "street",
                      city=graph.city, address=" & ".join(streets), lat=graph.lat[i], lng=graph.lng[i], node=place_id)
+
+    def _address_place(self, place_id: str) -> Place | None:
+        city, _, text = place_id[len(ADDRESS_ID_PREFIX):].partition(":")
+        if city not in self.cities_by_name or not text:
+            return None
+        found = self._search_address(text, [city])
+        return found[0] if found else None
 
     def stores(self) -> list[Place]:
         return sorted((p for p in self.places.values() if p.kind == "store"), key=lambda p: p.id)
@@ -360,16 +375,26 @@ class World:
         return out
 
     def _search_address(self, query: str, cities: list[str]) -> list[Place]:
+        """Street addresses as address places (named by the address, never by the building there): the
+        address of a point of interest stands at its node, any other is interpolated along its block."""
         parsed = parse_address(query)
         if parsed is None:
             return []
         number, street = parsed
         out: list[Place] = []
+        seen: set[tuple[str, str]] = set()
         folded = _fold(query)
-        for pid, p in self.places.items():
+        for pid in sorted(self.places):
+            p = self.places[pid]
             if p.city in cities and (self._folded_address[pid] == folded or
                                      _same_address(p.address, number, street, self.cities_by_name[p.city].aliases)):
-                out.append(p)
+                key = (p.city, self._folded_address[pid])
+                if key in seen:
+                    continue  # two places at one address: one address
+                seen.add(key)
+                out.append(Place(id=f"{ADDRESS_ID_PREFIX}{p.city}:{p.address}", name=p.address, kind="address",
+                                 city=p.city, address=p.address, lat=p.lat, lng=p.lng, node=p.node,
+                                 heading_from_node=p.heading_from_node, offset_m=p.offset_m, refers_to=p.id))
         if out:
             return out
         for c in cities:
@@ -395,8 +420,9 @@ class World:
             i = g.nearest(lat, lng, on_street)
             canonical = next(g.streets[s] for _, _, s, _ in g.adj[i] if g.street_key[s] in (key,) or
                              loose_street(g.street_key[s]) == loose_street(key))
-            out.append(Place(id=g.ids[i], name=f"{number} {canonical}", kind="address", city=c,
-                             address=f"{number} {canonical}", lat=g.lat[i], lng=g.lng[i], node=g.ids[i]))
+            address = f"{number} {canonical}"
+            out.append(Place(id=f"{ADDRESS_ID_PREFIX}{c}:{address}", name=address, kind="address", city=c,
+                             address=address, lat=g.lat[i], lng=g.lng[i], node=g.ids[i]))
         return out
 
     def _search_names(self, query: str, cities: list[str]) -> list[Place]:
@@ -407,7 +433,8 @@ class World:
             p = self.places[pid]
             if p.city not in cities:
                 continue
-            words = text.split() + self._folded_address[pid].split()
+            # Name and kind only: matching address words would turn an address into the name of what is there.
+            words = text.split()
             if q in text:
                 score = 3.0 + (1.0 if text.startswith(q) else 0.0) + len(q) / max(1, len(text))
             elif all(any(w.startswith(t) for w in words) for t in tokens):
@@ -422,6 +449,8 @@ class World:
         if not isinstance(ref, str) or not ref:
             raise WorldError("empty place reference; pass a place id (poi-..., store-...) or a node id")
         p = self.places.get(ref)
+        if p is None and ref.startswith(ADDRESS_ID_PREFIX):
+            p = self._address_place(ref)
         if p is not None:
             graph, i = self.locate(p.node)
             return graph, i, p
@@ -444,6 +473,22 @@ class World:
                           distance_m=distance, duration_s=round(distance / WALKING_SPEED_MPS, 1), steps=steps)
 
 
+def directions_via(world: "World", origin: str, via: str, destination: str) -> Directions:
+    """Walking directions from origin to destination that pass a waypoint: the two shortest legs joined,
+    the first leg's arrival becoming a 'Pass ...' step (maneuver 'waypoint')."""
+    first, second = world.directions(origin, via), world.directions(via, destination)
+    g, _, via_place = world.resolve(via)
+    arrive = first.steps[-1]
+    name = via_place.name if via_place is not None else "the waypoint"
+    side = arrive.instruction.removeprefix(f"Arrive at {name}").removesuffix(".")
+    passing = DirectionStep("waypoint", arrive.street, 0.0, f"Pass {name}{side}, then go on.", arrive.start_node,
+                            arrive.end_node, arrive.heading)
+    legs = first.steps[:-1] + [passing] + second.steps
+    distance = round(first.distance_m + second.distance_m, 1)
+    return Directions(city=first.city, origin=origin, destination=destination, nodes=first.nodes + second.nodes[1:],
+                      distance_m=distance, duration_s=round(distance / WALKING_SPEED_MPS, 1), steps=legs)
+
+
 def _same_address(address: str, number: int, street: str, aliases: dict[str, str]) -> bool:
     parsed = parse_address(address)
     if parsed is None or parsed[0] != number:
@@ -453,16 +498,20 @@ def _same_address(address: str, number: int, street: str, aliases: dict[str, str
                                                              b.split()[0] not in ("west", "east"))
 
 
-def _maneuver(turn: float) -> str:
+def _maneuver(turn: float, reverses: bool = False) -> str:
+    """The instruction for a change of heading. A U-turn is only ever walking back the way one came;
+    a street leaving at a very sharp angle (a diagonal crossing a grid) is a sharp turn."""
+    if reverses:
+        return "u-turn"
     a = abs(turn)
     if a < 25:
         return "continue"
     side = "right" if turn > 0 else "left"
     if a < 60:
         return f"slight {side}"
-    if a <= 150:
+    if a <= 135:
         return f"turn {side}"
-    return "u-turn"
+    return f"sharp {side}"
 
 
 def _round_m(d: float) -> int:
@@ -475,15 +524,17 @@ def _steps(g: CityGraph, path: list[int], dest: Place | None) -> list[DirectionS
         return [DirectionStep("arrive", g.node_streets[path[0]][0] if g.node_streets[path[0]] else "",
                               0.0, f"You are already at {name}.", g.ids[path[0]], g.ids[path[0]], 0.0)]
     segments: list[dict[str, Any]] = []
-    for a, b in zip(path, path[1:]):
+    for k, (a, b) in enumerate(zip(path, path[1:])):
         length, s, h = g.edge(a, b)
-        if segments and segments[-1]["street"] == s:
+        reverses = k > 0 and path[k - 1] == b  # walking straight back along the edge just walked
+        if segments and segments[-1]["street"] == s and not reverses:
             seg = segments[-1]
             seg["length"] += length
             seg["end"] = b
             seg["last_heading"] = h
         else:
-            segments.append({"street": s, "length": length, "start": a, "end": b, "heading": h, "last_heading": h})
+            segments.append({"street": s, "length": length, "start": a, "end": b, "heading": h, "last_heading": h,
+                             "reverses": reverses})
     steps: list[DirectionStep] = []
     prev_heading = None
     for k, seg in enumerate(segments):
@@ -493,11 +544,13 @@ def _steps(g: CityGraph, path: list[int], dest: Place | None) -> list[DirectionS
             maneuver = "depart"
             text = f"Head {cardinal_word(seg['heading'])} on {street} for {_round_m(dist)} m."
         else:
-            maneuver = _maneuver(angle_diff(seg["heading"], prev_heading))
+            maneuver = _maneuver(angle_diff(seg["heading"], prev_heading), seg["reverses"])
             if maneuver == "continue":
                 text = f"Continue onto {street} for {_round_m(dist)} m."
             elif maneuver == "u-turn":
-                text = f"Make a U-turn onto {street} and walk {_round_m(dist)} m."
+                text = f"Make a U-turn and walk back along {street} for {_round_m(dist)} m."
+            elif maneuver.startswith("sharp"):
+                text = f"Turn {maneuver} onto {street} and walk {_round_m(dist)} m."
             else:
                 text = f"{maneuver.capitalize()} onto {street} and walk {_round_m(dist)} m."
         steps.append(DirectionStep(maneuver, street, dist, text, g.ids[seg["start"]], g.ids[seg["end"]],

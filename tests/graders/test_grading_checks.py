@@ -191,7 +191,7 @@ def _street(tmp_path: Path, state: dict[str, Any], radius: float | None = None, 
     return grade_episode(ep.directory, radius_m=radius)
 
 
-def test_navigation_success_is_stopping_within_the_radius(tmp_path: Path) -> None:
+def test_navigation_success_is_ending_the_walk_within_the_radius(tmp_path: Path) -> None:
     near = offset_north(GOAL["lat"], GOAL["lng"], 20)
     far = offset_north(GOAL["lat"], GOAL["lng"], 30)
     assert _street(tmp_path, street_state(*near)).embodied_success is True
@@ -200,8 +200,41 @@ def test_navigation_success_is_stopping_within_the_radius(tmp_path: Path) -> Non
     assert at_30.navigation[0].distance_to_goal_m == pytest.approx(30, abs=0.2)
     assert _street(tmp_path, street_state(*far), radius=40).embodied_success is True
     assert _street(tmp_path, street_state(*near), radius=10).embodied_success is False
+    # Without a stop the walk ends where the episode finishes: that position is graded.
     walking = _street(tmp_path, street_state(*near, stopped=False))
-    assert walking.embodied_success is False and walking.navigation[0].within_radius is True
+    assert walking.embodied_success is True and walking.navigation[0].stopped is False
+    assert "never stopped" in _street(tmp_path, street_state(*far, stopped=False)).conditions[0].note
+
+
+def test_the_walk_is_graded_where_it_ended(tmp_path: Path) -> None:
+    # walk_end (where street_stop was called) is what counts, not a position reported beside it.
+    near = offset_north(GOAL["lat"], GOAL["lng"], 10)
+    far = offset_north(GOAL["lat"], GOAL["lng"], 300)
+    stopped_near = {**street_state(*far), "walk_stopped": True,
+                    "walk_end": {"node": "n-goal", "lat": near[0], "lng": near[1], "by": "street_stop"}}
+    result = _street(tmp_path, stopped_near)
+    assert result.embodied_success is True and result.navigation[0].final_node == "n-goal"
+    stopped_far = {**street_state(*near), "walk_end": {"node": "n-x", "lat": far[0], "lng": far[1]}}
+    assert _street(tmp_path, stopped_far).embodied_success is False
+
+
+def test_a_waypoint_must_be_passed_before_the_walk_ends(tmp_path: Path) -> None:
+    waypoint = offset_north(GOAL["lat"], GOAL["lng"], -200)
+    goal = {"kind": "passed_place", "city": "manhattan", "node": "n-way", "lat": waypoint[0], "lng": waypoint[1]}
+    near_way = offset_north(*waypoint, 15)
+
+    def run(points: Any) -> Any:
+        state = {**street_state(GOAL["lat"], GOAL["lng"]), **({"path_points": points} if points is not None else {})}
+        task = street_task()
+        task["embodied_goals"].append(goal)
+        ep = EpisodeBuilder(tmp_path, task).finish(embodied=state)
+        return grade_episode(ep.directory)
+
+    passed = run([list(offset_north(*waypoint, -100)), list(near_way), [GOAL["lat"], GOAL["lng"]]])
+    assert passed.embodied_success is True and [c.met for c in passed.conditions] == [True, True]
+    skipped = run([list(offset_north(*waypoint, 60)), [GOAL["lat"], GOAL["lng"]]])
+    assert skipped.embodied_success is False and "no closer than 60 m" in skipped.conditions[1].note
+    assert run(None).conditions[1].met is None
 
 
 def test_exact_node_distance_and_spl(tmp_path: Path) -> None:
@@ -217,8 +250,8 @@ def test_exact_node_distance_and_spl(tmp_path: Path) -> None:
     nav3 = _street(tmp_path, street_state(GOAL["lat"], GOAL["lng"], walked=400.0),
                    metadata={"start_lat": start[0], "start_lng": start[1]}).navigation[0]
     assert nav3.spl == pytest.approx(0.5, abs=0.002)
-    failed = _street(tmp_path, street_state(GOAL["lat"], GOAL["lng"], stopped=False),
-                     metadata={"shortest_path_m": 100.0}).navigation[0]
+    away = offset_north(GOAL["lat"], GOAL["lng"], 100)
+    failed = _street(tmp_path, street_state(*away), metadata={"shortest_path_m": 100.0}).navigation[0]
     assert failed.spl == 0.0
 
 

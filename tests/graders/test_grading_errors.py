@@ -173,7 +173,9 @@ def test_never_stopped(tmp_path: Path) -> None:
     ep = EpisodeBuilder(tmp_path, task)
     ep.call("browser_click").event(site="map", type="directions", origin="poi-a", destination="poi-b")
     ep.switch("embodied").call("street_move", {"direction": "forward"}).call("street_move", {"direction": "left"})
-    error = classify(ep, state=street_state(GOAL["lat"], GOAL["lng"], stopped=False), status="step_limit")
+    # The walk ended, unstopped, 80 m away when the step limit ended the episode.
+    away = offset_north(GOAL["lat"], GOAL["lng"], 80)
+    error = classify(ep, state=street_state(*away, stopped=False), status="step_limit")
     assert error.category == "never_stopped" and error.group == "embodied_only"
 
 

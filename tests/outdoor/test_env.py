@@ -1,6 +1,7 @@
 """The street environment: moves, refused moves, stop, the final state, no goal leakage."""
 
 import json
+import re
 
 import pytest
 
@@ -59,7 +60,7 @@ async def test_refused_moves_name_the_choices_and_change_nothing(world):
     env = await started(world)
     env.move(direction="forward")  # now mid-block on 5th Avenue: no street to the left or right
     snapshot = json.dumps(await env.final_state())
-    with pytest.raises(EnvError, match="valid directions here: forward, back"):
+    with pytest.raises(EnvError, match=r"valid directions here: forward \(5th Avenue, .*\), back \(5th Avenue"):
         env.move(direction="left")
     with pytest.raises(EnvError, match="not a neighbour.*valid neighbour ids"):
         env.move(neighbour="mn-0000000000")
@@ -73,9 +74,9 @@ async def test_stop_ends_the_walk(world):
     env = await started(world)
     env.stop()
     node = env.node
-    with pytest.raises(EnvError, match="already stopped"):
+    with pytest.raises(EnvError, match="the walk is over.*finish_episode"):
         env.move(direction="forward")
-    with pytest.raises(EnvError, match="already stopped"):
+    with pytest.raises(EnvError, match="the walk is over.*finish_episode"):
         env.stop()
     assert env.node == node and (await env.final_state())["stopped"] is True
 
@@ -114,3 +115,80 @@ async def test_bad_start_is_refused_clearly(world):
     task.start.embodied.node = world.search("Broad St & Market St", city="philadelphia")[0].node
     with pytest.raises(EnvError, match="is in philadelphia, not in manhattan"):
         await env.reset(task, {})
+
+
+HERALD_SQUARE = "mn-1a5b7f7603"  # 6th Avenue, Broadway and West 34th Street: six streets, two pairs close together
+
+
+async def started_at(world, node, heading, city="manhattan"):
+    task = Task.model_validate({
+        "id": "nav-test", "domain": "navigation", "intent": "Walk.",
+        "start": {"environment": "embodied", "embodied": {"kind": "street", "city": city, "node": node,
+                                                          "heading": heading}}})
+    env = StreetEnvironment(episode=None, services=Services())
+    await env.reset(task, {"observation": "text"})
+    return env
+
+
+@pytest.mark.anyio
+@pytest.mark.parametrize("heading", range(0, 360, 5))
+async def test_every_listed_direction_names_one_street(world, heading):
+    env = await started_at(world, HERALD_SQUARE, float(heading))
+    listed = env.observation().data["neighbours"]
+    labels = [n["direction"] for n in listed]
+    assert len(listed) == 6 and len(set(labels)) == 6 and None not in labels
+    for n in listed:  # each label walks to exactly the neighbour it is listed with
+        probe = await started_at(world, HERALD_SQUARE, float(heading))
+        probe.move(direction=n["direction"])
+        assert probe.path[-1] == n["node"]
+
+
+@pytest.mark.anyio
+async def test_a_plain_direction_matching_several_streets_is_refused_with_the_choices(world):
+    env = await started_at(world, HERALD_SQUARE, 60.0)
+    listed = env.observation().data["neighbours"]
+    right = [n for n in listed if 45 <= n["relative_heading"] <= 135]
+    assert len(right) == 2 and "right" not in {n["direction"] for n in listed}
+    with pytest.raises(EnvError, match="'right' is ambiguous here: 2 streets") as refused:
+        env.move(direction="right")
+    for n in right:
+        assert n["node"] in str(refused.value) and repr(n["direction"]) in str(refused.value)
+    assert env.path == [HERALD_SQUARE]
+
+
+@pytest.mark.anyio
+async def test_landmark_distances_are_measured_from_where_the_agent_stands(world):
+    # Walking up North 12th Street towards Reading Terminal Market: the market's distance shrinks at
+    # every move, and at its node it is announced as right here on the right.
+    market = world.place("poi-philadelphia-reading-terminal-market")
+    route = world.directions(world.search("Market St & 12th St", city="philadelphia")[0].node, market.id)
+    env = await started_at(world, route.nodes[0], route.steps[0].heading, city="philadelphia")
+    seen = []
+    for node in route.nodes[1:]:
+        obs = env.move(neighbour=node)
+        for line in obs.text.splitlines():
+            for m in re.finditer(r'(\d+) m away: a sign reading "Reading Terminal Market"', line):
+                seen.append((node, int(m.group(1))))
+    front = [d for _, d in dict(seen).items()]
+    assert len(front) >= 4 and all(a > b for a, b in zip(front, front[1:])), seen
+    assert front[-1] <= 15
+    assert 'Right here: on your right, a sign reading "Reading Terminal Market"' in obs.text
+
+
+@pytest.mark.anyio
+async def test_stop_ends_the_walk_and_says_so(world):
+    env = await started(world)
+    env.move(direction="forward")
+    obs = env.stop()
+    assert obs.data["walk_stopped"] is True
+    assert "Walk stopped at 5th Avenue; call finish_episode to end the episode." in obs.text
+    assert "Walk stopped at" in env.observation().text
+    with pytest.raises(EnvError, match="the walk is over: it stopped at 5th Avenue.*Call finish_episode"):
+        env.move(direction="back")
+    state = await env.final_state()
+    assert state["walk_stopped"] is True and state["walk_end"]["by"] == "street_stop"
+    assert state["walk_end"]["node"] == state["node"] == state["path"][-1]
+    assert len(state["path_points"]) == len(state["path"]) == 2
+    fresh = await started(world)
+    assert fresh.observation().data["walk_stopped"] is False
+    assert (await fresh.final_state())["walk_end"]["by"] == "episode_end"

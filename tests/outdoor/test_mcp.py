@@ -55,7 +55,7 @@ async def test_walk_to_a_store_over_mcp(tmp_path, world, street_only):
         r = await c.call_tool("street_stop", {"episode_id": ep})
         assert not r.is_error
         r = await c.call_tool("street_move", {"episode_id": ep, "direction": "forward"})
-        assert r.is_error and "already stopped" in r.content[0].text
+        assert r.is_error and "the walk is over" in r.content[0].text
         r = await c.call_tool("finish_episode", {"episode_id": ep})
         assert not r.is_error
     final = json.loads((tmp_path / "run" / ep / "final_state.json").read_text())
@@ -70,3 +70,12 @@ async def test_walk_to_a_store_over_mcp(tmp_path, world, street_only):
     assert len(moves) == len(directions.nodes) - 1 + 2
     assert [m["ok"] for m in moves] == [True] * (len(directions.nodes) - 1) + [False, False]
     assert moves[-2]["args"] == {"direction": "sideways"} and moves[-2]["counted"] is True
+
+
+def test_the_move_tool_offers_exactly_the_environments_labels():
+    from typing import get_args
+
+    from ewa_mcp.outdoor import env
+    from ewa_mcp.tools import street
+
+    assert get_args(street.Direction) == get_args(env.Direction)

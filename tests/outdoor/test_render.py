@@ -19,7 +19,7 @@ def test_same_scene_renders_identical_pixels(world):
     b = render_png(_scene(world, "store-target-herald-square", 299.0))
     assert a == b
     img = Image.open(io.BytesIO(a))
-    assert img.size == (320, 220)
+    assert img.size == (480, 330)
     assert len(img.convert("RGB").getcolors(maxcolors=4096) or []) > 10  # an actual picture, not a blank frame
 
 
@@ -50,3 +50,20 @@ def test_street_ahead_and_cross_streets_follow_the_graph(world):
     sideways = compute_scene(world, graph, i, 29.0 + 45.0, "front")
     assert not sideways.road_ahead  # facing the buildings between two streets
     assert "5th Avenue" in up.street_signs
+
+
+def test_the_details_a_description_names_are_drawn(world):
+    # The library's description mentions two stone lions, steps, columns and arched entrances: standing at
+    # its door and facing it, the lions are in the picture (and not in the same view of a plain building).
+    from ewa_mcp.outdoor.render import LION, details_of, render
+
+    library = world.place("poi-manhattan-new-york-public-library-stephen-a-schwarzman-building")
+    assert {"lions", "steps", "columns", "arch"} <= details_of(library.description_hint)
+    graph, i = world.locate(library.node)
+    scene = compute_scene(world, graph, i, library.heading_from_node, "front")
+    assert "lions" in describe(scene)
+    lion_pixels = sum(n for n, colour in render(scene).getcolors(maxcolors=1 << 16) if colour == LION)
+    assert lion_pixels > 400
+    for f in scene.frontages:
+        f.hint = "a plain building"
+    assert not any(colour == LION for _, colour in render(scene).getcolors(maxcolors=1 << 16))

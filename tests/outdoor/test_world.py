@@ -57,7 +57,11 @@ def test_manhattan_grid_runs_29_degrees_east_of_north(world):
 def test_search_names_addresses_intersections_case_insensitive(world):
     assert world.search("FLATIRON building")[0].id == "poi-manhattan-flatiron-building"
     assert world.search("trader joes")[0].id == "store-traderjoes-chelsea"
-    assert world.search("350 Fifth Avenue")[0].id == "poi-manhattan-empire-state-building"
+    # An address is found as an address, standing at the building's node, never as the building's name.
+    esb = world.place("poi-manhattan-empire-state-building")
+    hits = world.search("350 Fifth Avenue")
+    assert [(p.kind, p.name, p.node, p.refers_to) for p in hits] == [("address", "350 5th Ave", esb.node, esb.id)]
+    assert world.place(hits[0].id).node == esb.node and world.directions(hits[0].id, esb.id).distance_m == 0
     x = world.search("W. 23rd St. & 5th Ave.")[0]
     assert x.kind == "intersection" and set(world.node(x.node).streets) >= {"5th Avenue", "West 23rd Street"}
     assert world.search("broad st and market st", city="philadelphia")[0].kind == "intersection"

@@ -53,6 +53,11 @@ def steps_on_page(html: str) -> list[str]:
     return [re.sub(r"\s+", " ", s).strip() for s in re.findall(r"<li>(.*?)</li>", block.group(1), re.S)]
 
 
+def without_placeholders(html: str) -> str:
+    """The page without the forms' example texts ("e.g. Empire State Building")."""
+    return re.sub(r' placeholder="[^"]*"', "", html)
+
+
 def page_svg(html: str) -> ET.Element:
     return ET.fromstring(re.search(r"<svg.*?</svg>", html, re.S).group(0))
 
@@ -80,7 +85,8 @@ def test_search_finds_places_addresses_and_intersections(client, sink, world):
     node = world.search("5th Ave & W 34th St")[0].id
     html = client.get("/search", params={"q": "5th Ave & W 34th St"}).text
     assert f'href="/place/{node}"' in html and "intersection" in html
-    assert "/place/poi-manhattan-empire-state-building" in client.get("/search", params={"q": "350 5th Ave"}).text
+    html = client.get("/search", params={"q": "350 5th Ave"}).text
+    assert 'href="/place/address%3Amanhattan%3A350%205th%20Ave"' in html and "Empire State" not in without_placeholders(html)
 
 
 def test_search_city_filter(client, sink):
@@ -115,6 +121,46 @@ def test_an_intersection_node_has_a_place_page(client, world):
     node = world.search("5th Ave & W 34th St")[0]
     html = client.get(f"/place/{node.id}").text
     assert "5th Avenue" in html and "West 34th Street" in html
+
+
+def landmarks_with_street_addresses(world):
+    from ewa_mcp.outdoor.address import parse_address
+
+    return sorted((p for p in world.places.values() if parse_address(p.address) and p.description_hint
+                   and p.name.lower() not in p.address.lower()  # "Elfreth's Alley" is named by its address
+                   and not p.name.split()[0].isdigit()
+                   and p.kind not in ("store", "restaurant", "station")), key=lambda p: p.id)
+
+
+def test_an_address_never_names_the_place_there(client, sink, world):
+    # A traveling task names its landmark by address and look only: no page reached from the address
+    # (search, directions both ways, the place page, the reverse route) may give the name away.
+    places = landmarks_with_street_addresses(world)
+    assert len(places) > 60
+    for p in places[::3]:
+        corner = world.place(next(n for n in world.city(p.city).ids if len(world.node(n).streets) > 1))
+        pages = [client.get("/search", params={"q": p.address}).text,
+                 client.get("/directions", params={"from": corner.id, "to": p.address}).text,
+                 client.get("/directions", params={"from": p.address, "to": corner.id}).text]
+        found = re.search(r'href="/place/([^"]+)"', pages[0])
+        assert found, f"searching {p.address!r} found nothing"
+        pages.append(client.get(f"/place/{found.group(1)}").text)
+        reverse = re.search(r'<a href="(/directions\?[^"]+)">Reverse the route', pages[1])
+        assert reverse, f"no route to {p.address!r}"
+        pages.append(client.get(reverse.group(1).replace("&amp;", "&")).text)
+        for html in map(without_placeholders, pages):
+            assert str(escape(p.name)) not in html and p.id not in html, (p.id, p.address)
+        assert steps_on_page(pages[1])[-1].startswith(f"Arrive at {escape(p.address)}")
+    # The record still knows which place the directions led to, so a task naming it either way is graded alike.
+    assert sink.of("directions")[0]["destination"] == places[0].id
+
+
+def test_sharp_turns_onto_a_diagonal_are_not_u_turns(client, world):
+    # At Herald Square, Broadway (north-east) meets 6th Avenue (south-west) at a very sharp angle.
+    route = world.directions("mn-45058621c3", "poi-manhattan-the-museum-at-fit")
+    assert [s.maneuver for s in route.steps][:2] == ["depart", "sharp left"]
+    html = client.get("/directions", params={"from": "mn-45058621c3", "to": "poi-manhattan-the-museum-at-fit"}).text
+    assert "U-turn" not in html and "Turn sharp left onto 6th Avenue" in html
 
 
 # ---------------------------------------------------------------- directions
@@ -191,3 +237,17 @@ def test_events_carry_the_episode(sink, world):
     TestClient(app, headers={"X-EWA-Episode": "ep-2"}).get("/directions", params={"from": FLATIRON, "to": TARGET})
     TestClient(app).get("/directions", params={"from": FLATIRON, "to": TARGET})
     assert [ep for ep, e in sink.events if e["type"] == "directions"] == ["ep-2", "anonymous"]
+
+
+def test_directions_via_a_waypoint_pass_it_and_record_both_legs(client, sink, world):
+    from ewa_mcp.outdoor.world import directions_via
+
+    esb = "poi-manhattan-empire-state-building"
+    html = client.get("/directions", params={"from": FLATIRON, "via": "Empire State Building", "to": TARGET}).text
+    route = directions_via(world, FLATIRON, esb, TARGET)
+    steps = steps_on_page(html)
+    assert steps == [str(escape(s.instruction)) for s in route.steps]
+    assert any(s.startswith("Pass Empire State Building") for s in steps)
+    assert route.nodes[: len(world.directions(FLATIRON, esb).nodes)] == world.directions(FLATIRON, esb).nodes
+    assert [(e["origin"], e["destination"]) for e in sink.of("directions")] == [(FLATIRON, esb), (esb, TARGET)]
+    assert "via=" in re.search(r'<a href="(/directions\?[^"]+)">Reverse the route', html).group(1)

@@ -24,7 +24,7 @@ def test_walking_directions_in_chromium(site_server, browser_page):
     assert image.is_visible()
     snapshot = page.locator("main").aria_snapshot()
     assert "Turn-by-turn directions" in snapshot and "Arrive at CVS Pharmacy Grand Central" in snapshot
-    assert page.url.startswith(url + "/directions?from=Flatiron+Building&to=CVS")  # URL-addressable
+    assert page.url.startswith(url + "/directions?from=Flatiron+Building&via=&to=CVS")  # URL-addressable
 
     shown = site_server.events.for_episode(episode, type="directions")
     assert shown == [{"site": "map", "type": "directions", "origin": "poi-manhattan-flatiron-building",

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import threading
+from urllib.parse import urlencode
 from pathlib import Path
 from typing import Any
 
@@ -39,6 +40,16 @@ def walking_minutes(duration_s: float) -> int:
     return max(1, math.ceil(duration_s / 60))
 
 
+def directions_query(origin: str, destination: str, via: str = "") -> str:
+    """The query string of a directions page (``via`` only when there is one)."""
+    return urlencode([("from", origin), *([("via", via)] if via else []), ("to", destination)])
+
+
+def record_id(place: Any) -> str:
+    """The id a site event records for a place: an address place's point of interest, else its own id."""
+    return getattr(place, "refers_to", None) or place.id
+
+
 def create_app(ctx: SiteContext, world: Any = None) -> Starlette:
     """``world`` defaults to the process-wide outdoor world, loaded in the background from here on."""
     templates = make_templates(SITE_DIR, ctx, "map")
@@ -52,6 +63,7 @@ def create_app(ctx: SiteContext, world: Any = None) -> Starlette:
 
     def render(request: Request, template: str, status: int = 200, **context: Any) -> Response:
         context.setdefault("cities", places.cities())
+        context.setdefault("directions_query", directions_query)
         return templates.TemplateResponse(request, template, context, status_code=status)
 
     def text_param(request: Request, name: str) -> str:
@@ -96,14 +108,17 @@ def create_app(ctx: SiteContext, world: Any = None) -> Starlette:
 
     async def directions(request: Request) -> Response:
         origin_text, destination_text = text_param(request, "from"), text_param(request, "to")
+        via_text = text_param(request, "via")
         page_view(request)
         context: dict[str, Any] = {"origin_text": origin_text, "destination_text": destination_text,
-                                   "route": None, "errors": [], "choices": {}}
+                                   "via_text": via_text, "route": None, "errors": [], "choices": {}, "via": None}
         if not origin_text or not destination_text:
             return render(request, "directions.html", **context)  # an empty or half-filled form
         resolved: dict[str, Resolution] = {"from": places.resolve(origin_text), "to": places.resolve(destination_text)}
+        if via_text:
+            resolved["via"] = places.resolve(via_text)
         for field, res in resolved.items():
-            label = "Start" if field == "from" else "Destination"
+            label = {"from": "Start", "to": "Destination", "via": "Via"}[field]
             if res.error:
                 context["errors"].append(f"{label}: {res.error}")
             elif res.choices:
@@ -111,18 +126,24 @@ def create_app(ctx: SiteContext, world: Any = None) -> Starlette:
         if context["errors"] or context["choices"]:
             return render(request, "directions.html", status=404 if context["errors"] else 200, **context)
         origin, destination = resolved["from"].place, resolved["to"].place
-        if origin.city != destination.city:
-            context["errors"].append(
-                f"{origin.name} is in {places.city_name(origin.city)} and {destination.name} is in "
-                f"{places.city_name(destination.city)}; walking directions need both places in the same city.")
-            return render(request, "directions.html", status=422, **context)
+        via = resolved["via"].place if "via" in resolved else None
+        for other in [p for p in (via, destination) if p is not None]:
+            if origin.city != other.city:
+                context["errors"].append(
+                    f"{origin.name} is in {places.city_name(origin.city)} and {other.name} is in "
+                    f"{places.city_name(other.city)}; walking directions need all places in the same city.")
+                return render(request, "directions.html", status=422, **context)
         try:
-            route = places.directions(origin, destination)
+            route = places.directions(origin, destination, via)
         except ValueError as exc:  # WorldError: e.g. no connected walking route
             context["errors"].append(str(exc))
             return render(request, "directions.html", status=422, **context)
-        emit(request, "directions", origin=origin.id, destination=destination.id, city=route.city,
-             distance_m=route.distance_m)
+        # An address stands for the place there in the record (a task may name it either way); the page
+        # itself shows only the address. A route via a waypoint is recorded as its two legs.
+        legs = [(origin, destination)] if via is None else [(origin, via), (via, destination)]
+        for start, end in legs:
+            emit(request, "directions", origin=record_id(start), destination=record_id(end), city=route.city,
+                 distance_m=route.distance_m, **({"via": record_id(via)} if via is not None else {}))
         coords = places.route_coordinates(route)
         svg = render_map_svg(
             title=f"Walking route from {origin.name} to {destination.name}",
@@ -132,7 +153,7 @@ def create_app(ctx: SiteContext, world: Any = None) -> Starlette:
             streets=places.segments(origin.city), route=coords, label_first=[step.street for step in route.steps],
             markers=[Marker(coords[0], "A", origin.name, START_COLOR), Marker(coords[-1], "B", destination.name,
                                                                                    END_COLOR)])
-        context.update(route=route, origin=origin, destination=destination, svg=svg,
+        context.update(route=route, origin=origin, destination=destination, via=via, svg=svg,
                        minutes=walking_minutes(route.duration_s), city_name=places.city_name(origin.city))
         return render(request, "directions.html", **context)
 

@@ -76,7 +76,11 @@ class WorldAdapter:
         return Resolution(choices=results)
 
     # ------------------------------------------------------------ routing and drawing
-    def directions(self, origin: Any, destination: Any) -> Any:
+    def directions(self, origin: Any, destination: Any, via: Any = None) -> Any:
+        if via is not None:
+            from ewa_mcp.outdoor.world import directions_via
+
+            return directions_via(self.world, origin.id, via.id, destination.id)
         return self.world.directions(origin.id, destination.id)
 
     def route_coordinates(self, route: Any) -> list[LatLng]:
