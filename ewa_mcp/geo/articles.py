@@ -14,6 +14,8 @@ uses are left out of the front matter (graders still accept them).
 
 from __future__ import annotations
 
+from typing import Any
+
 import json
 import random
 import re
@@ -171,7 +173,7 @@ def country_article(country: Country, cities: list[City], names: dict[str, str],
     body.append(f"- The centre line of two-way streets is {country.centre_line}"
                 + (f"; road edges are marked in {country.edge_line}." if country.edge_line != "white" else "."))
     body.append(_plate_line(country, example_region))
-    body.append(f"- Typical city streets: {arch.description}.")
+    body.append(f"- Typical city streets: {architecture_words(arch)}.")
     facts = [without_view_words(fact, banned) for fact in country.facts]
     body += [f"- {fact}" for fact in facts if fact]
     others = [c for c in cities if _key(c.name) != _key(title)]
@@ -284,6 +286,31 @@ def plate_words(city: City) -> str | None:
             f"place of the country's generic characters")
 
 
+ROOF_WORDS = {"mansard": "mansard roofs", "pitched": "pitched roofs", "flat": "flat roofs", "gabled": "gabled roofs",
+              "curved_tile": "curved tile roofs"}
+MATERIAL_WORDS = {"plaster": "plastered masonry", "brick": "brick", "stone": "stone", "wood": "timber",
+                  "concrete": "concrete", "glass": "steel and glass"}
+
+
+def architecture_words(arch: Any) -> str:
+    """The city's buildings as an encyclopedia summarises them: material, height, roofs and common features,
+    in words of its own — never the sentence a street view uses, so that sentence cannot be searched for."""
+    low, high = arch.floors
+    height = f"{low} storeys" if low == high else f"{low} to {high} storeys"
+    features = [word for flag, word in (
+        (arch.balconies, "balconies"), (arch.dormers, "dormer windows"), (arch.chimneys, "chimney stacks"),
+        (arch.fire_escapes, "fire escapes"), (arch.arcade, "ground-floor arcades"), (arch.veranda, "covered verandas"),
+        (arch.shutters, "window shutters"), (arch.water_tanks, "rooftop water tanks"), (arch.ac_units, "air conditioners"),
+        (arch.wires, "overhead cables"), (arch.awnings, "shop awnings"), (arch.soot, "soot-darkened facades"),
+        (arch.corrugated, "corrugated roofing"), (arch.vertical_signs, "vertical signboards")) if flag]
+    text = f"the typical street building is of {MATERIAL_WORDS.get(arch.material, arch.material)}, {height} high, under " \
+           f"{ROOF_WORDS.get(arch.roof, arch.roof + ' roofs')}"
+    if features:
+        listed = features[0] if len(features) == 1 else ", ".join(features[:-1]) + " and " + features[-1]
+        text += f"; {listed} are common"
+    return text
+
+
 def _city_sections(city: City, locations: list[Location]) -> list[str]:
     country = COUNTRIES[city.iso]
     arch = ARCH[city.arch or country.arch]
@@ -292,7 +319,7 @@ def _city_sections(city: City, locations: list[Location]) -> list[str]:
     if city.langs:
         names = [f"{language(c).name} ({language(c).script} script)" for c in city.langs]
         body.append("- Shop and street signs are written in " + " and ".join(names) + ".")
-    body.append(f"- Buildings: {arch.description}.")
+    body.append(f"- Architecture: {architecture_words(arch)}.")
     trees = city.trees or climate.trees
     body.append("- Street trees: " + ", ".join(TREE_WORDS[t] for t in trees) + ".")
     body.append(f"- Climate: {CLIMATE_WORDS[city.climate]}.")

@@ -136,3 +136,14 @@ def test_leak_check_catches_an_article_that_quotes_a_view():
     assert leaks(loc.sign[0], {article.slug}, index=index)
     assert leaks("0161 496 0123", {article.slug}, index=index)
     assert leaks("0161 496 0123", {article.slug}, index=SearchIndex([article, *others])) is None
+
+
+def test_no_article_repeats_a_view_description_word_for_word():
+    """A play-tester found each city's article quoting the sentence its views use for the buildings, so one
+    search for that sentence named the city. Articles now summarise the architecture in words of their own."""
+    from ewa_mcp.geo.styles import ARCH
+
+    texts = [" ".join(a.body.split()) for a in store.load_articles()]
+    for name, arch in ARCH.items():
+        sentence = " ".join(arch.description.split())
+        assert not any(sentence in text for text in texts), f"an article quotes the {name} buildings sentence"
