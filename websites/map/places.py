@@ -73,6 +73,12 @@ class WorldAdapter:
         for candidates in (results, exact, structured):
             if len(candidates) == 1:
                 return Resolution(candidates[0])
+            same_spot = [p for p in candidates if p.name.casefold() == candidates[0].name.casefold()
+                         and p.node == candidates[0].node]
+            if candidates and len(same_spot) == len(candidates):
+                # one spot under one name (a place whose name is its own address, and that address's
+                # anonymous twin): the same answer either way; the place itself is the one to report
+                return Resolution(next((p for p in candidates if not p.id.startswith("address:")), candidates[0]))
         return Resolution(choices=results)
 
     # ------------------------------------------------------------ routing and drawing
