@@ -65,3 +65,15 @@ def test_validate_reports_bad_dir(tmp_path, capsys):
     (tmp_path / "bad.json").write_text("{}")
     assert main(["tasks", "validate", "--tasks", str(tmp_path)]) == 1
     assert "invalid task" in capsys.readouterr().err
+
+
+def test_every_walking_intent_says_how_the_walk_ends():
+    """Issue 15: navigation intents said "stop", shopping intents did not; one sentence now says it everywhere."""
+    from ewa_mcp.paths import tasks_dir
+    from ewa_mcp.taskgen.common import WALK_RULE
+    from ewa_mcp.taskmodel import TaskStore
+
+    walks = [t for t in TaskStore([tasks_dir()]).all()
+             if t.start.embodied is not None and t.start.embodied.kind == "street"]
+    assert {t.domain for t in walks} == {"navigation", "shopping", "traveling"}
+    assert [t.id for t in walks if WALK_RULE not in t.intent] == []
