@@ -52,8 +52,13 @@ async def test_walk_to_a_store_over_mcp(tmp_path, world, street_only):
             assert not r.is_error, r.content[0].text
         r = await c.call_tool("street_move", {"episode_id": ep, "direction": "sideways"})
         assert r.is_error  # input validation names the allowed values
+        r = await c.call_tool("episode_status", {"episode_id": ep})
+        assert r.structured_content["walk_stopped"] is False and "walk not stopped" in r.content[0].text
         r = await c.call_tool("street_stop", {"episode_id": ep})
         assert not r.is_error
+        r = await c.call_tool("episode_status", {"episode_id": ep})
+        assert r.structured_content["status"] == "running" and r.structured_content["walk_stopped"] is True
+        assert "walk stopped" in r.content[0].text
         r = await c.call_tool("street_move", {"episode_id": ep, "direction": "forward"})
         assert r.is_error and "the walk is over" in r.content[0].text
         r = await c.call_tool("finish_episode", {"episode_id": ep})
