@@ -173,7 +173,8 @@ class StreetEnvironment(Environment):
                          f"({n['relative_heading']:+.0f}° relative), {n['distance_m']:.0f} m")
         here = places_here(self.world, g, self.node, self.heading)
         if here:
-            lines.append("Right here: " + " ".join(here))
+            # one place per line: "Right here: on your left, …" / "Also here: on your right, …"
+            lines += [("Right here: " if i == 0 else "Also here: ") + item for i, item in enumerate(here)]
         view_data = []
         images: list[bytes] = []
         for label, heading in self.views(frame):

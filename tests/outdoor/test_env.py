@@ -192,3 +192,17 @@ async def test_stop_ends_the_walk_and_says_so(world):
     fresh = await started(world)
     assert fresh.observation().data["walk_stopped"] is False
     assert (await fresh.final_state())["walk_end"]["by"] == "episode_end"
+
+
+@pytest.mark.anyio
+async def test_two_places_at_one_node_read_as_two_sentences(world):
+    # A play-tester read "Right here: on your right, a … tower … . on your right, a rugged church …" at
+    # Boylston & Clarendon, where two landmarks share a node: each place now gets its own line.
+    from ewa_mcp.outdoor.scene import places_here
+
+    graph = world.city("boston")
+    node = next(n for n in graph.ids if len(places_here(world, graph, graph.index[n], 0.0)) >= 2)
+    env = await started_at(world, node, 0.0, city="boston")
+    lines = [ln for ln in env.observation("relative").text.splitlines() if ln.startswith(("Right here:", "Also here:"))]
+    assert len(lines) >= 2 and lines[0].startswith("Right here: ") and lines[1].startswith("Also here: ")
+    assert all(ln.endswith(".") and ln.count(". ") == 0 for ln in lines), lines  # one sentence per line
