@@ -32,9 +32,22 @@ def in_stock(product: Any, size: str, store_id: str) -> bool:
         return False
 
 
+def first_listed_store(product: Any, size: str, stocked_only: bool = False) -> str | None:
+    """The store the product page lists first (its Store menu's default), optionally among those with stock."""
+    for store in catalog.load_stores():
+        if product.offer(size, store.id) is not None and (not stocked_only or in_stock(product, size, store.id)):
+            return store.id
+    return None
+
+
+def seller_ids(product: Any, size: str) -> list[str]:
+    """Stores that sell this size (in stock or not), in the order the product page lists them."""
+    return [s.id for s in catalog.load_stores() if product.offer(size, s.id) is not None]
+
+
 def slots(out: list[Task]) -> Any:
     """Task numbers to fill until a template has PER_TEMPLATE tasks; a rejected draw costs a try, not a slot."""
-    for _ in range(PER_TEMPLATE * 10):
+    for _ in range(PER_TEMPLATE * 100):
         if len(out) >= PER_TEMPLATE:
             return
         yield len(out)
@@ -58,9 +71,25 @@ class Context:
             if max(dists) <= MAX_WALK_M:
                 starts.append(p)
         self.starts = starts
+        self._walks: dict[tuple[Any, str], Any] = {}
 
     def walk(self, start: Any, store_id: str) -> Any:
-        return self.world.directions(start.node, self.store_places[store_id].node)
+        key = (start.node, store_id)
+        if key not in self._walks:
+            self._walks[key] = self.world.directions(start.node, self.store_places[store_id].node)
+        return self._walks[key]
+
+    def nearest(self, start: Any, store_ids: list[str]) -> str | None:
+        """The nearest on foot of these stores, or None when the two nearest are too close to call (< 100 m)."""
+        ranked = sorted(store_ids, key=lambda sid: self.walk(start, sid).distance_m)
+        if len(ranked) > 1 and self.walk(start, ranked[1]).distance_m - self.walk(start, ranked[0]).distance_m < 100:
+            return None
+        return ranked[0] if ranked else None
+
+    def cheapest_is_decisive(self, start: Any, product: Any, size: str, store_id: str) -> bool:
+        """Ignoring "cheapest" must fail: the cheapest store is neither the nearest seller nor the first listed."""
+        return (store_id != first_listed_store(product, size)
+                and self.nearest(start, seller_ids(product, size)) not in (None, store_id))
 
 
 def _task(ctx: Context, tid: str, intent: str, start: Any, product: Any, size: str, store_id: str,
@@ -141,9 +170,9 @@ def cheapest_tasks(ctx: Context) -> list[Task]:
         product = rng.choice(ctx.products)
         size = rng.choice(product.sizes).label
         store_id = catalog.cheapest_store(product.id, size)
-        if not in_stock(product, size, store_id):
-            continue
         start = rng.choice(ctx.starts)
+        if not in_stock(product, size, store_id) or not ctx.cheapest_is_decisive(start, product, size, store_id):
+            continue
         walk_first = n % 4 == 3
         intent = (f"Buy me {product.name} ({size}) for pickup at the store that sells it cheapest, "
                   f"then walk there from {start.name} to pick it up. {WALK_RULE}") if not walk_first else (
@@ -166,15 +195,22 @@ def size_tasks(ctx: Context) -> list[Task]:
         amount = (below.grams or below.ml) + max(1, ((target.grams or target.ml) - (below.grams or below.ml)) // 2)
         unit = "g" if target.grams else "ml"
         store_id = catalog.cheapest_store(product.id, target.label)
-        if not in_stock(product, target.label, store_id):
-            continue
         start = rng.choice(ctx.starts)
+        # Each stated constraint decides: the size that is enough is not the first listed one (the smallest is
+        # never enough), and its cheapest store is neither the nearest seller nor the first listed.
+        if (not in_stock(product, target.label, store_id) or target.label == product.sizes[0].label
+                or not ctx.cheapest_is_decisive(start, product, target.label, store_id)):
+            continue
         intent = (f"What size of {product.name} should I buy if I need at least {amount} {unit}? Buy the smallest "
                   f"size that is enough, at the store where that size is cheapest, then walk there from "
                   f"{start.name}. {WALK_RULE} Tell me the size. "
                   + answer_rule("Answer with the size as the shop labels it."))
-        out.append(_task(ctx, f"shopping-size-{n:03d}", intent, start, product, target.label, store_id, rng,
-                         answer=size_answer(product, target.label, [f"{amount} {unit}"])))
+        if any(t.intent == intent for t in out):
+            continue  # the same question twice
+        task = _task(ctx, f"shopping-size-{n:03d}", intent, start, product, target.label, store_id, rng,
+                     answer=size_answer(product, target.label, [f"{amount} {unit}"]))
+        task.metadata["need"] = {"amount": amount, "unit": unit}
+        out.append(task)
     return out
 
 
@@ -183,17 +219,24 @@ def calorie_tasks(ctx: Context) -> list[Task]:
     rng = rng_for("shopping", "calories")
     foods = [p for p in ctx.products if p.nutrition is not None]
     for n in slots(out):
-        a, b = rng.sample(foods, 2)
-        if a.nutrition.calories == b.nutrition.calories:
+        low, high = rng.sample(foods, 2)
+        if low.nutrition.calories == high.nutrition.calories:
             continue
-        low = a if a.nutrition.calories < b.nutrition.calories else b
+        if low.nutrition.calories > high.nutrition.calories:
+            low, high = high, low
+        # The lower product is named first in half the tasks and second in the other half, so neither
+        # "the first one" nor "the second one" answers without reading the calories.
+        a, b = (low, high) if n % 2 == 0 else (high, low)
         size = low.sizes[0].label  # not named in the intent: it would tell which product is lower
-        stocked = [sid for sid in ctx.stores if in_stock(low, size, sid)]
-        if not stocked:
+        start = rng.choice(ctx.starts)
+        # The named store decides too: it is not the store an agent ignoring the name would pick (the
+        # nearest seller, the first listed, the cheapest for that size).
+        sellers = seller_ids(low, size)
+        ignored = {ctx.nearest(start, sellers), first_listed_store(low, size), catalog.cheapest_store(low.id, size)}
+        stocked = [sid for sid in sellers if in_stock(low, size, sid) and sid not in ignored]
+        if not stocked or None in ignored:
             continue
         store_id = rng.choice(stocked)
-        start = rng.choice(ctx.starts)
-        high = b if low is a else a
         intent = (f"How many calories are in {a.name} and {b.name} per serving? I need to select the lower one: "
                   f"order it, in the first size the shop lists for it, for pickup at {ctx.stores[store_id].name}, "
                   f"walk there from {start.name}, and tell me its calories per serving. {WALK_RULE} "
@@ -201,26 +244,35 @@ def calorie_tasks(ctx: Context) -> list[Task]:
         check = committed_answer(str(low.nutrition.calories), [high.name, str(high.nutrition.calories)],
                                  context=[low.name, *(s.label for s in low.sizes), low.nutrition.serving_size],
                                  numbers=CALORIES)
-        out.append(_task(ctx, f"shopping-calories-{n:03d}", intent, start, low, size, store_id, rng,
-                         answer=check))
+        if any(t.intent == intent for t in out):
+            continue  # the same question twice
+        task = _task(ctx, f"shopping-calories-{n:03d}", intent, start, low, size, store_id, rng, answer=check)
+        task.metadata["named_products"] = [a.id, b.id]
+        out.append(task)
     return out
 
 
 def nearest_tasks(ctx: Context) -> list[Task]:
     out = []
     rng = rng_for("shopping", "nearest")
+    sold_out = [(p, o.size) for p in ctx.products for o in p.offers if o.stock == 0
+                and any(q.size == o.size and q.stock > 0 for q in p.offers)]
+    seen: set[tuple[str, str, str]] = set()
     for n in slots(out):
-        product = rng.choice(ctx.products)
-        size = rng.choice(product.sizes).label
+        # "that has it in stock" must decide: the nearest store selling this size has none on the shelf.
+        product, size = rng.choice(sold_out)
         start = rng.choice(ctx.starts)
-        stocked = [sid for sid in ctx.stores if in_stock(product, size, sid)]
-        if not stocked:
+        if (product.id, size, start.id) in seen:
+            continue  # few product sizes are sold out somewhere: do not ask the same thing twice
+        seen.add((product.id, size, start.id))
+        sellers = seller_ids(product, size)
+        stocked = [sid for sid in sellers if in_stock(product, size, sid)]
+        nearest_seller, store_id = ctx.nearest(start, sellers), ctx.nearest(start, stocked)
+        if nearest_seller is None or store_id is None or in_stock(product, size, nearest_seller):
+            continue  # too close to call, or the nearest seller has stock
+        # "closest to me" must decide too: the answer is not the first listed or the cheapest store in stock.
+        if store_id in (first_listed_store(product, size, stocked_only=True), catalog.cheapest_store(product.id, size)):
             continue
-        dist = {sid: ctx.walk(start, sid).distance_m for sid in stocked}
-        ranked = sorted(stocked, key=lambda s: dist[s])
-        if len(ranked) > 1 and dist[ranked[1]] - dist[ranked[0]] < 100:
-            continue  # too close to call: the answer must be unambiguous
-        store_id = ranked[0]
         intent = (f"I am at {start.name}. Buy me {product.name} ({size}) for pickup at the store closest to me "
                   f"on foot that has it in stock, then walk there. {WALK_RULE}")
         out.append(_task(ctx, f"shopping-nearest-{n:03d}", intent, start, product, size, store_id, rng))
@@ -239,10 +291,16 @@ def pair_tasks(ctx: Context) -> list[Task]:
         if store_a == store_b or not in_stock(a, size_a, store_a) or not in_stock(b, size_b, store_b):
             continue
         start = rng.choice(ctx.starts)
+        if not (ctx.cheapest_is_decisive(start, a, size_a, store_a) and ctx.cheapest_is_decisive(start, b, size_b, store_b)):
+            continue
         walks = {sid: ctx.walk(start, sid) for sid in (store_a, store_b)}
-        if abs(walks[store_a].distance_m - walks[store_b].distance_m) < 100:
+        near = ctx.nearest(start, [store_a, store_b])
+        if near is None:
             continue  # too close to call: which store is nearer must be unambiguous
-        near = min(walks, key=lambda sid: walks[sid].distance_m)
+        # "nearer" decides: the walk ends at the first product's store in half the tasks, the second's in the
+        # other half; and "of those two" decides: the nearer of the two is not the nearest store of all.
+        if near != (store_a if n % 2 == 0 else store_b) or ctx.nearest(start, list(ctx.stores)) in (None, near):
+            continue
         route, place = walks[near], ctx.store_places[near]
         node = ctx.world.node(place.node)
         intent = (f"Buy me {a.name} ({size_a}) and {b.name} ({size_b}), each for pickup at the store that sells "

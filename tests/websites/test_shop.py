@@ -201,6 +201,8 @@ def test_checkout_places_an_order_with_the_grader_shape(app, sink):
     add(c, "prod-eggs", "12 ct", "store-traderjoes-chelsea", 1)
     page = c.get("/checkout").text
     assert 'value="store-traderjoes-chelsea" checked' in page  # all lines came from one store
+    # and the page says which store it pre-selected and why (a play-tester met the choice twice, unexplained)
+    assert "Pre-selected: Trader Joe&#39;s Chelsea, the store you chose when adding these items" in page
     r = c.post("/checkout", data={"store_id": "store-traderjoes-chelsea"}, follow_redirects=False)
     assert r.status_code == 303 and r.headers["location"] == "/orders/EWA-1001?placed=1"
     [event] = sink.of("ep-1", "order_placed")
@@ -225,6 +227,9 @@ def test_checkout_places_an_order_with_the_grader_shape(app, sink):
 def test_checkout_reprices_at_the_chosen_pickup_store(app, sink):
     c = client(app)
     add(c, "prod-apple", "1 each", "store-traderjoes-chelsea", 3)
+    other = add(c, "prod-apple", "1 each", in_stock_store("prod-apple", "1 each", exclude="store-traderjoes-chelsea"))
+    assert "Pre-selected" not in c.get("/checkout").text  # two stores in the cart: nothing is pre-selected
+    c.post("/cart/update", data={"line_id": other.headers["location"].split("=")[1], "quantity": "0"})
     target = in_stock_store("prod-apple", "1 each", exclude="store-traderjoes-chelsea")
     c.post("/checkout", data={"store_id": target})
     [event] = sink.of("ep-1", "order_placed")

@@ -240,11 +240,13 @@ def create_app(ctx: SiteContext) -> Starlette:
         episode = episode_of(request)
         lines = state.cart(episode)
         line_stores = {line.store.id for line in lines}
+        preselected = None
         if not selected and len(line_stores) == 1:
             selected = next(iter(line_stores))  # everything was added for one store: preselect it
+            preselected = next(line.store for line in lines)  # and say so on the page
         quotes = [state.quote(episode, store.id) for store in stores] if lines else []
         return render(request, "checkout.html", status=status, lines=lines, quotes=quotes, selected=selected,
-                      error=error, fulfilment=fulfilment)
+                      error=error, fulfilment=fulfilment, preselected=preselected)
 
     async def checkout_page(request: Request) -> Response:
         page_view(request)

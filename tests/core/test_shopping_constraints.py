@@ -1,0 +1,127 @@
+"""Every constraint a shopping intent states decides the answer (play-test: "nearest store that has it in
+stock" was passed by an agent that never looked at stock, because every store had it).
+
+For each committed shopping task, the answer of each strategy that ignores one stated constraint is worked
+out from the shop's real catalogue and the street map, and must differ from the task's expected answer.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from ewa_mcp.outdoor.world import get_world
+from ewa_mcp.websites.shop import catalog
+
+TASKS_DIR = Path(__file__).resolve().parents[2] / "tasks"
+
+
+def shopping_tasks() -> list[dict]:
+    return [t for p in sorted((TASKS_DIR / "shopping").glob("*.json")) for t in json.loads(p.read_text("utf-8"))]
+
+
+TASKS = shopping_tasks()
+
+
+def distance(task: dict, store_id: str) -> float:
+    start = task["start"]["embodied"]["node"]
+    return get_world().directions(start, task["metadata"]["store_nodes"][store_id]).distance_m
+
+
+def sellers(product_id: str, size: str) -> list[str]:
+    """Stores selling this size, in the product page's order."""
+    product = catalog.get_product(product_id)
+    return [s.id for s in catalog.load_stores() if product.offer(size, s.id) is not None]
+
+
+def stocked(product_id: str, size: str) -> list[str]:
+    return [s for s in sellers(product_id, size) if catalog.stock(product_id, size, s) > 0]
+
+
+def nearest(task: dict, store_ids: list[str]) -> str:
+    return min(store_ids, key=lambda s: distance(task, s))
+
+
+def ignore_cheapest(task: dict, product_id: str, size: str) -> dict[str, str]:
+    """Where an agent ignoring "cheapest" would order: the nearest seller, or the product page's default."""
+    return {"nearest seller": nearest(task, sellers(product_id, size)),
+            "first listed store": sellers(product_id, size)[0]}
+
+
+def wrong_answers(task: dict) -> dict[str, object]:
+    """Strategy name -> its answer, for comparison with expected_answer(task)."""
+    meta, kind = task["metadata"], task["id"].split("-")[1]
+    if kind == "cheapest":
+        return ignore_cheapest(task, meta["product_id"], meta["size"])
+    if kind == "size":
+        product = catalog.get_product(meta["product_id"])
+        metric = sorted((s for s in product.sizes if s.grams or s.ml), key=lambda s: s.grams or s.ml)
+        out: dict[str, object] = {"smallest size": metric[0].label, "first listed size": product.sizes[0].label}
+        out.update(ignore_cheapest(task, meta["product_id"], meta["size"]))
+        return out
+    if kind == "calories":
+        first = meta["named_products"][0]
+        size = catalog.get_product(meta["product_id"]).sizes[0].label
+        return {"nearest seller": nearest(task, sellers(meta["product_id"], size)),
+                "first listed store": sellers(meta["product_id"], size)[0],
+                "cheapest store": catalog.cheapest_store(meta["product_id"], size),
+                # Per task, one of the two named products is the answer; across tasks see the balance test.
+                "_first named": first}
+    if kind == "nearest":
+        in_stock = stocked(meta["product_id"], meta["size"])
+        return {"nearest seller ignoring stock": nearest(task, sellers(meta["product_id"], meta["size"])),
+                "first listed store in stock": in_stock[0],
+                "cheapest store": catalog.cheapest_store(meta["product_id"], meta["size"])}
+    if kind == "pair":
+        out = {}
+        for i, (product_id, size) in enumerate(zip(meta["products"], meta["sizes"])):
+            for name, store in ignore_cheapest(task, product_id, size).items():
+                out[f"product {i + 1}: {name}"] = store
+        out["walk to the nearest store of all"] = nearest(task, list(meta["store_nodes"]))
+        return out
+    raise AssertionError(f"unknown shopping template in {task['id']}")
+
+
+def expected(task: dict, strategy: str) -> object:
+    meta = task["metadata"]
+    if task["id"].startswith("shopping-size-") and "size" in strategy:
+        return meta["size"]
+    if task["id"].startswith("shopping-pair-"):
+        if strategy.startswith("walk"):
+            return meta["nearer_store"]
+        return meta["stores"][int(strategy.split()[1][0]) - 1]
+    return meta["store_id"]
+
+
+def test_every_template_is_covered() -> None:
+    assert {t["id"].split("-")[1] for t in TASKS} == {"cheapest", "size", "calories", "nearest", "pair"}
+
+
+@pytest.mark.parametrize("task", TASKS, ids=[t["id"] for t in TASKS])
+def test_ignoring_any_stated_constraint_gives_a_wrong_answer(task: dict) -> None:
+    for strategy, answer in wrong_answers(task).items():
+        if strategy.startswith("_"):
+            continue
+        assert answer != expected(task, strategy), f"{task['id']}: the strategy '{strategy}' also passes"
+
+
+def test_nearest_store_in_stock_is_not_the_nearest_seller() -> None:
+    """The play-tested case itself: the nearest store selling the size has none on the shelf."""
+    for task in (t for t in TASKS if t["id"].startswith("shopping-nearest-")):
+        meta = task["metadata"]
+        near = nearest(task, sellers(meta["product_id"], meta["size"]))
+        assert catalog.stock(meta["product_id"], meta["size"], near) == 0, task["id"]
+        assert meta["store_id"] == nearest(task, stocked(meta["product_id"], meta["size"])), task["id"]
+
+
+def test_position_in_the_intent_never_gives_the_answer_away() -> None:
+    """Calories: the lower product is named first in some tasks and second in others; pair: the walk ends at
+    the first product's store in some tasks and at the second's in others."""
+    calories = [t for t in TASKS if t["id"].startswith("shopping-calories-")]
+    first = [t["metadata"]["named_products"][0] == t["metadata"]["product_id"] for t in calories]
+    assert 0.3 <= sum(first) / len(first) <= 0.7, f"lower product named first in {sum(first)} of {len(first)}"
+    pairs = [t for t in TASKS if t["id"].startswith("shopping-pair-")]
+    first = [t["metadata"]["nearer_store"] == t["metadata"]["stores"][0] for t in pairs]
+    assert 0.3 <= sum(first) / len(first) <= 0.7, f"walk ends at the first store in {sum(first)} of {len(first)}"
