@@ -47,7 +47,8 @@ class Frontage:
 class Opening:
     side: str  # left, right or both
     distance_m: float
-    street: str
+    street: str  # the street to the left (or the one side's street)
+    right_street: str | None = None  # side "both": the street to the right when it is named otherwise
 
 
 @dataclass
@@ -73,6 +74,7 @@ class Scene:
     frontages: list[Frontage] = field(default_factory=list)
     skyline: list[SkylineItem] = field(default_factory=list)
     street_signs: list[str] = field(default_factory=list)
+    open_space: str = ""  # a park's look where it lies across the sidewalk this way ("" for none)
     seed: int = 0
 
 
@@ -115,6 +117,30 @@ def places_here(world: World, graph: CityGraph, i: int, heading: float) -> list[
     return out
 
 
+OPEN_SPACE_KINDS = {"park"}
+OPEN_SPACE_HALF_ANGLE = 45.0
+OPEN_SPACE_MIN_REACH_M = 120.0  # a small park is seen this far from its centre; a large one further:
+OPEN_SPACE_MARGIN_M = 60.0  # its centre lies as far inside as from its street node, plus this
+
+
+def open_space_this_way(world: World, graph: CityGraph, i: int, heading: float) -> str:
+    """The look of a park lying this way beside the street (its centre within reach and within 45° of
+    the view): a view across it shows lawns and trees, not building fronts. The data has no park
+    outlines, so a park's reach is judged from how far its centre lies from its street node."""
+    lat0, lng0 = graph.lat[i], graph.lng[i]
+    best: tuple[float, str] | None = None
+    for p in world.places.values():
+        if p.city != graph.city or p.kind not in OPEN_SPACE_KINDS:
+            continue
+        d = haversine_m(lat0, lng0, p.lat, p.lng)
+        reach = max(OPEN_SPACE_MIN_REACH_M, p.offset_m + OPEN_SPACE_MARGIN_M)
+        if d > reach or abs(angle_diff(bearing_deg(lat0, lng0, p.lat, p.lng), heading)) > OPEN_SPACE_HALF_ANGLE:
+            continue
+        if best is None or d < best[0]:
+            best = (d, p.description_hint or "an open park with lawns and trees")
+    return best[1] if best else ""
+
+
 def compute_scene(world: World, graph: CityGraph, i: int, heading: float, label: str) -> Scene:
     node_id = graph.ids[i]
     seed = int(hashlib.sha1(f"{node_id}:{round(heading) % 360}".encode()).hexdigest()[:8], 16)
@@ -133,7 +159,12 @@ def compute_scene(world: World, graph: CityGraph, i: int, heading: float, label:
                     side = "right" if rel > 0 else "left"
                     existing = next((o for o in scene.openings if abs(o.distance_m - travelled) < 5), None)
                     if existing and existing.side != side:
-                        existing.side = "both"
+                        # one cross street may change its name here (North / South 11th Street): each
+                        # side is named as the map's directions name the street one turns onto
+                        left, right = ((existing.street, graph.streets[s2]) if side == "right"
+                                       else (graph.streets[s2], existing.street))
+                        existing.side, existing.street = "both", left
+                        existing.right_street = right if right != left else None
                     elif existing is None:
                         scene.openings.append(Opening(side, round(travelled, 1), graph.streets[s2]))
             straight = [(k, ln, s2, h2) for k, ln, s2, h2 in graph.adj[cur]
@@ -171,6 +202,7 @@ def compute_scene(world: World, graph: CityGraph, i: int, heading: float, label:
         elif height and float(height) >= SKYLINE_MIN_HEIGHT_M and d <= SKYLINE_RANGE_M and abs(rel) <= 40.0:
             scene.skyline.append(SkylineItem(round(rel, 1), round(d, 1), float(height), _style(p),
                                              p.description_hint, p.id))
+    scene.open_space = open_space_this_way(world, graph, i, heading)
     scene.frontages.sort(key=lambda f: f.range_m)
     scene.skyline.sort(key=lambda s: -s.distance_m)
     streets = graph.node_streets[i]
@@ -179,21 +211,46 @@ def compute_scene(world: World, graph: CityGraph, i: int, heading: float, label:
     return scene
 
 
+def opening_words(o: Opening) -> str:
+    at = f"at {int(round(o.distance_m))} m"
+    if o.side != "both":
+        return f"{o.street} opens to the {o.side} {at}"
+    if o.right_street:
+        return f"{o.street} opens to the left and {o.right_street} to the right {at}"
+    return f"{o.street} opens to the left and right {at}"
+
+
+STREET_SIDE_M = 20.0  # an entrance this close to the view's axis is on the street ahead, not off it
+
+
+def frontage_where(scene: Scene, f: Frontage) -> str:
+    """Where a place is, in words that keep two meanings apart: the side of the street ahead (as the
+    map's "on your left" means it: the side of the street one walks along), or, for a place off that
+    street, the direction of sight."""
+    if f.side == "ahead":
+        return "straight ahead"
+    if scene.road_ahead and f.lateral_m <= STREET_SIDE_M and f.distance_m <= scene.ahead_length_m + 10:
+        return f"ahead on the {f.side}-hand side of {scene.ahead_street}"
+    return f"off the street ahead, {int(round(abs(f.rel_angle)))}° to the {f.side} of straight ahead"
+
+
 def describe(scene: Scene) -> str:
     """One paragraph for text-only agents; never names landmarks, only what a sign would show."""
     parts = [f"{scene.label} (facing {cardinal_word(scene.heading)}, {round(scene.heading)}°):"]
     if scene.road_ahead:
         parts.append(f"{scene.ahead_street} continues ahead for about {int(round(scene.ahead_length_m, -1))} m.")
         if scene.openings:
-            crossings = "; ".join(
-                f"{o.street} opens to the {o.side if o.side != 'both' else 'left and right'} at {int(round(o.distance_m))} m"
-                for o in scene.openings[:3])
+            crossings = "; ".join(opening_words(o) for o in scene.openings[:3])
             parts.append(f"Cross streets: {crossings}.")
     else:
-        parts.append("No street continues this way: a row of building fronts across the sidewalk.")
+        if scene.open_space:
+            parts.append("No street continues this way: across the sidewalk lies open ground, "
+                         f"{scene.open_space.rstrip('.').lower()}.")
+        else:
+            parts.append("No street continues this way: a row of building fronts across the sidewalk.")
     for f in scene.frontages[:5]:
-        where = "straight ahead" if f.side == "ahead" else f"on the {f.side}"
-        parts.append(f"{where.capitalize()}, {int(round(f.range_m))} m away: {what_is_seen(f.kind, f.sign, f.hint)}.")
+        parts.append(f"{frontage_where(scene, f).capitalize()}, {int(round(f.range_m))} m away: "
+                     f"{what_is_seen(f.kind, f.sign, f.hint)}.")
     for s in sorted(scene.skyline, key=lambda s: s.distance_m)[:2]:
         side = "slightly right" if s.rel_angle > 10 else "slightly left" if s.rel_angle < -10 else "straight ahead"
         parts.append(f"On the skyline {side}, about {int(round(s.distance_m, -2))} m away: {s.hint.rstrip('.').lower()}.")

@@ -101,7 +101,9 @@ def test_every_poi_is_attached_close_to_its_street(world):
         place = world.place(p["id"])
         assert place is not None, p["id"]
         node = world.node(place.node)
-        assert haversine_m(node.lat, node.lng, p["lat"], p["lng"]) < 230, p["id"]
+        # a large park can be attached at the corner its address names, at its edge (ANCHOR_MAX_MOVE_M)
+        limit = 230 if p["kind"] != "park" else 330
+        assert haversine_m(node.lat, node.lng, p["lat"], p["lng"]) < limit, p["id"]
 
 
 def _walk(world, directions):
