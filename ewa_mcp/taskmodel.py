@@ -114,31 +114,30 @@ class ObjectIn(_Strict):
     with_state: dict[str, bool] = Field(default_factory=dict)
 
 
-class ReachedPlace(_Strict):
+class _StreetTarget(_Strict):
+    """A point of a city's street graph that a walk is checked against."""
+
+    city: str
+    node: str
+    lat: float
+    lng: float
+    radius_m: float = 25.0
+    place_id: str | None = None
+
+
+class ReachedPlace(_StreetTarget):
     """Embodied (street): the walk ended (at the first street_stop, else when the episode finished)
     within ``radius_m`` of the target."""
 
     kind: Literal["reached_place"] = "reached_place"
-    city: str
-    node: str
-    lat: float
-    lng: float
-    radius_m: float = 25.0
-    place_id: str | None = None
     # Shopping: the store must be the pickup store of the order that matched the web goal.
     must_match_order_store: bool = False
 
 
-class PassedPlace(_Strict):
+class PassedPlace(_StreetTarget):
     """Embodied (street): the walk passed within ``radius_m`` of a waypoint before it ended."""
 
     kind: Literal["passed_place"] = "passed_place"
-    city: str
-    node: str
-    lat: float
-    lng: float
-    radius_m: float = 25.0
-    place_id: str | None = None
 
 
 WebGoal = Annotated[RecipeCompleted | OrderPlaced | DirectionsShown | PageVisited, Field(discriminator="kind")]
