@@ -12,6 +12,7 @@ Ops (one step of a recipe may have several):
     {"op": "slice", "object": T}                 T in Apple, Bread, Lettuce, Potato, Tomato
     {"op": "crack", "object": "Egg"}
     {"op": "cook", "object": T, "method": "stove"|"microwave"|"toaster"|"any"}   T a food or piece type
+        (a stove cook may add "vessel": "Pan"|"Pot", the one the step names; without it, any Pan or Pot)
     {"op": "put", "object": T, "receptacle": R}  R in Plate, Bowl, Pan, Pot, CounterTop, DiningTable,
                                                  Fridge, Microwave, SinkBasin
     {"op": "open"|"close", "object": R}, {"op": "toggle_on"|"toggle_off", "object": X}
@@ -37,6 +38,7 @@ from .vocabulary import FOOD_TYPES, PIECE_FOR, PIECE_OF, SLICING_TOOLS, TOOL_TYP
 SLICEABLE = ("Apple", "Bread", "Lettuce", "Potato", "Tomato")
 PUT_RECEPTACLES = ("Plate", "Bowl", "Pan", "Pot", "CounterTop", "DiningTable", "Fridge", "Microwave", "SinkBasin")
 COOK_METHODS = ("stove", "microwave", "toaster", "any")
+STOVE_VESSELS = ("Pan", "Pot")
 TOGGLEABLE = ("StoveKnob", "StoveBurner", "Microwave", "Toaster", "CoffeeMachine")
 OPENABLE = ("Fridge", "Microwave", "Cabinet", "Drawer")
 
@@ -51,6 +53,7 @@ class _Op:
     object: str
     method: str | None = None
     receptacle: str | None = None
+    vessel: str | None = None
 
     def describe(self) -> str:
         extra = f" ({self.method})" if self.method else f" -> {self.receptacle}" if self.receptacle else ""
@@ -75,7 +78,11 @@ def _parse_ops(ops: Sequence[dict[str, Any]]) -> list[_Op]:
                 raise PlanError(f"op {i}: cannot cook {obj!r}; use a food ({', '.join(FOOD_TYPES)}) or a piece type")
             if method == "toaster" and obj not in ("BreadSliced", "Bread"):
                 raise PlanError(f"op {i}: a toaster takes only BreadSliced, not {obj!r}")
-            parsed.append(_Op(kind, obj, method=method))
+            vessel = raw.get("vessel")
+            if vessel is not None and (method != "stove" or vessel not in STOVE_VESSELS):
+                raise PlanError(f"op {i}: a vessel ({', '.join(STOVE_VESSELS)}) goes only with method 'stove', "
+                                f"got {vessel!r} with {method!r}")
+            parsed.append(_Op(kind, obj, method=method, vessel=vessel))
             continue
         elif kind == "put":
             receptacle = str(raw.get("receptacle", ""))
@@ -292,7 +299,7 @@ class _Planner:
             self.reach(item_id)
             self.call("kitchen_cook", {"object": self.h(item_id)})
         elif op.method == "stove":
-            self.cook_on_stove(item_id)
+            self.cook_on_stove(item_id, op.vessel)
         elif op.method == "microwave":
             microwave = self.instance("Microwave")["objectId"]
             self.hold(item_id)
@@ -311,11 +318,14 @@ class _Planner:
                 self.call("kitchen_toggle", {"object": self.h(toaster), "state": "on"})
         cooked.add(op.object)
 
-    def cook_on_stove(self, item_id: str) -> None:
-        vessels = [t for t in ("Pan", "Pot") if self.of_type(t)]
-        if not vessels:
-            raise PlanError(f"{self.scene} has no Pan or Pot to cook on the stove")
-        vessel = self.instance(self.chosen.get("_vessel") or vessels[0])
+    def cook_on_stove(self, item_id: str, wanted: str | None = None) -> None:
+        if wanted is not None:
+            vessel = self.instance(wanted)  # the vessel the recipe names, or a PlanError saying it is missing
+        else:
+            vessels = [t for t in STOVE_VESSELS if self.of_type(t)]
+            if not vessels:
+                raise PlanError(f"{self.scene} has no Pan or Pot to cook on the stove")
+            vessel = self.instance(self.chosen.get("_vessel") or vessels[0])
         self.chosen["_vessel"] = vessel["objectType"]
         vessel_id = vessel["objectId"]
         if self.parent_type(vessel) != "StoveBurner":
@@ -443,6 +453,7 @@ def check_recipe_executable(scene_name: str, ops: Sequence[dict[str, Any]],
     present = have["food"] | have["tools"]
     needed = {PIECE_OF.get(op.object, op.object) for op in parsed if op.op in ("slice", "crack", "cook", "put")}
     needed |= {op.receptacle for op in parsed if op.receptacle in TOOL_TYPES}
+    needed |= {op.vessel for op in parsed if op.vessel}
     deliveries = sorted(t for t in set(available_extra_types) if t not in present and t in needed)
     missing = sorted(t for t in needed if t in FOOD_TYPES + TOOL_TYPES and t not in present and t not in deliveries)
     if missing:

@@ -27,7 +27,15 @@ from typing import Any, Protocol
 
 from ..environment import EnvError
 from .commands import Command, parse_command
-from .vocabulary import DELIVERABLE_TYPES, PIECE_FOR, PIECE_OF, canonical_type, similar_types
+from .vocabulary import (
+    DELIVERABLE_TYPES,
+    PIECE_FOR,
+    PIECE_OF,
+    SHOP_SOLD_TYPES,
+    STAND_INS,
+    canonical_type,
+    similar_types,
+)
 
 TELEPORT_REACH = 1.2  # metres: stand well inside the 1.5 m interaction range
 TELEPORT_HALF_ANGLE = 44.0  # keep the target inside the 90° field of view
@@ -174,6 +182,16 @@ class KitchenSession:
             raise KitchenActionError(f"there is no {text}; the {kind} objects here are: {listed}")
         return self._resolve_type(kind, purpose)
 
+    def _missing_hint(self, kind: str) -> str:
+        """What to do about a type the kitchen lacks: buy it (only what the shop sells), or use a stand-in
+        that is here; otherwise nothing to suggest."""
+        if kind in SHOP_SOLD_TYPES:
+            return " It can be bought on the shopping site; deliveries arrive on a CounterTop."
+        here = [t for t in STAND_INS.get(kind, ()) if any(o["objectType"] == t for o in self.objects.values())]
+        if here:
+            return f" Use {' or '.join(f'a {t}' for t in here)} instead."
+        return " The shop does not sell it."
+
     def _examples(self) -> str:
         names = [self.handle(i) for i, o in self.objects.items() if o["pickupable"]][:3]
         return ", ".join(names) or "CounterTop_1"
@@ -188,9 +206,7 @@ class KitchenSession:
                 candidates = pieces
                 notes.append(f"{kind} is cut into {PIECE_FOR[kind]} pieces; using one of them.")
         if not candidates:
-            extra = " It can be bought on the shopping site; deliveries arrive on a CounterTop." \
-                if kind in DELIVERABLE_TYPES else ""
-            raise KitchenActionError(f"there is no {kind} in this kitchen.{extra}")
+            raise KitchenActionError(f"there is no {kind} in this kitchen.{self._missing_hint(kind)}")
         if purpose == "teleport":
             candidates = [o for o in candidates if o["objectId"] != held and not o["isPickedUp"]]
             if not candidates:

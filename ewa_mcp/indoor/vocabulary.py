@@ -153,6 +153,14 @@ TYPES: dict[str, TypeSpec] = {
 
 # What a shop order may deliver into the kitchen (food and tools, not furniture).
 DELIVERABLE_TYPES: frozenset[str] = frozenset(FOOD_TYPES) | frozenset(TOOL_TYPES)
+# What the shop actually sells for the kitchen: its food, nothing else (a test checks this against the
+# shop's catalogue). Only these may be suggested as "can be bought".
+SHOP_SOLD_TYPES: frozenset[str] = frozenset(FOOD_TYPES)
+# What does the same job when a kitchen lacks a type (a pot on the stove for a pan, ...).
+STAND_INS: dict[str, tuple[str, ...]] = {
+    "Pan": ("Pot",), "Pot": ("Pan",), "Knife": ("ButterKnife",), "ButterKnife": ("Knife",),
+    "Cup": ("Mug",), "Mug": ("Cup",),
+}
 
 
 def source_type(object_type: str) -> str:

@@ -11,13 +11,14 @@ Three templates, each with its difficulty:
 
 from __future__ import annotations
 
+import re
 from typing import Any
 
 from ..indoor.planner import check_recipe_executable, plan_ops, scene_inventory
 from ..taskmodel import KitchenStart, OrderPlaced, RecipeCompleted, StartState, Task, WebStart
 from ..websites.recipes.catalog import Filters, load_catalog
 from ..websites.shop import catalog as shop_catalog
-from ..websites.recipes.vocabulary import KITCHEN_PRODUCTS
+from ..websites.recipes.vocabulary import EQUIPMENT_WORDS, KITCHEN_PRODUCTS, required_equipment
 from .common import call, ref, rng_for, site_url, step_limit_for
 from .recipe_goals import FOODS, PIECE_SOURCE, goals_from_ops, recipe_ops
 
@@ -140,6 +141,24 @@ def kitchen_steps(recipe: dict[str, Any]) -> dict[str, list[int]]:
             "not_kitchen": [n for n, step in enumerate(recipe["steps"], 1) if not step.get("kitchen")]}
 
 
+def kitchen_equipment(recipe: dict[str, Any]) -> set[str]:
+    """Every kitchen object type (tool, vessel, appliance, dish) the kitchen steps need: what their ops
+    use, and what their kitchen notes name ("fry it in the pan" needs a Pan, even where a Pot would do)."""
+    needed: set[str] = set()
+    for step in recipe["steps"]:
+        if not step.get("kitchen"):
+            continue
+        for op in step.get("ops", []):
+            needed |= required_equipment(op)
+        needed |= {EQUIPMENT_WORDS[w] for w in re.findall(r"[a-z]+", step["kitchen"].lower()) if w in EQUIPMENT_WORDS}
+    return needed
+
+
+def missing_equipment(recipe: dict[str, Any], inventory: dict[str, set[str]]) -> set[str]:
+    """The equipment the recipe's kitchen steps need that this kitchen lacks (equipment is never delivered)."""
+    return kitchen_equipment(recipe) - inventory["tools"] - inventory["receptacles"]
+
+
 def needed_foods(ops: list[dict[str, Any]]) -> set[str]:
     return {PIECE_SOURCE.get(op.get("object", ""), op.get("object", "")) for op in ops} & FOODS
 
@@ -149,6 +168,8 @@ def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str
     buy = list(buy or [])
     kind = kind or ("buy" if buy else "cook")
     ops = recipe_ops(recipe)
+    if missing_equipment(recipe, scene_inventory(scene)):
+        return None  # the shop sells food only: a kitchen without the steps' pan, bowl, ... cannot do them
     ok, _ = check_recipe_executable(scene, ops, available_extra_types=buy)
     if not ok:
         return None
@@ -173,7 +194,8 @@ def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str
               call("finish_episode")]
     steps = kitchen_steps(recipe)
     return Task(
-        id=f"cooking-{recipe['id']}-{kind}-{n:02d}",
+        # Provisional; generate() gives every task an opaque id (the recipe id is the recipe page's URL).
+        id=f"cooking-{kind}-{recipe['id']}-{n:02d}",
         domain="cooking",
         difficulty=DIFFICULTY[kind],
         intent=intent,
@@ -205,6 +227,8 @@ def generate() -> list[Task]:
         foods = needed_foods(ops)
         scenes = SCENES[:]
         rng.shuffle(scenes)
+        # Every template (cook, buy, hard) cooks in a kitchen that has all the steps' equipment.
+        scenes = [s for s in scenes if not missing_equipment(recipe, inventories[s])]
         # Hard: two constraints, two needed foods missing (replacing cook tasks, so the suite keeps its size).
         hard = 0
         pairs = two_constraints(recipe, catalog)
@@ -242,4 +266,19 @@ def generate() -> list[Task]:
                         tasks.append(task)
                         shopping += 1
                     break
-    return tasks
+    return with_opaque_ids(tasks)
+
+
+def with_opaque_ids(tasks: list[Task]) -> list[Task]:
+    """Number the tasks of each template in a seeded random order: ``cooking-hard-0007``. An id derived
+    from the recipe would hand the agent the recipe page's URL (/recipe/r071) and skip the search."""
+    order = list(range(len(tasks)))
+    rng_for("cooking", "task-ids").shuffle(order)
+    counts: dict[str, int] = {}
+    renamed: list[Task | None] = [None] * len(tasks)
+    for index in order:
+        task = tasks[index]
+        kind = task.id.split("-")[1]
+        counts[kind] = counts.get(kind, 0) + 1
+        renamed[index] = task.model_copy(update={"id": f"cooking-{kind}-{counts[kind]:04d}"})
+    return sorted((t for t in renamed if t is not None), key=lambda t: t.id)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 
 import pytest
 
@@ -77,3 +78,33 @@ def test_every_walking_intent_says_how_the_walk_ends():
              if t.start.embodied is not None and t.start.embodied.kind == "street"]
     assert {t.domain for t in walks} == {"navigation", "shopping", "traveling"}
     assert [t.id for t in walks if WALK_RULE not in t.intent] == []
+
+
+# Metadata keys that name a task's answer or target (a page, a place, a product): an id carrying one hands
+# the agent the URL or the answer (issue: /recipe/r071 from cooking-r071-cook-02).
+TARGET_KEYS = ("recipe_id", "recipe_name", "product_id", "store_id", "destination_node", "poi_id", "article",
+               "location_id", "answer_id")
+
+
+def _forms(value: str) -> set[str]:
+    """The value, its slug, and the slug without a type prefix ("prod-", "poi-", "bo-")."""
+    slug = re.sub(r"[^a-z0-9]+", "-", value.lower()).strip("-")
+    forms = {value.lower(), slug}
+    if "-" in slug:
+        forms.add(slug.split("-", 1)[1])
+    return {f for f in forms if len(f) >= 4}
+
+
+def test_no_task_id_names_its_target():
+    from ewa_mcp.paths import tasks_dir
+    from ewa_mcp.taskmodel import TaskStore
+
+    checked = 0
+    for task in TaskStore([tasks_dir()]).all():
+        for key in TARGET_KEYS:
+            value = (task.metadata or {}).get(key)
+            if isinstance(value, str) and value:
+                checked += 1
+                for form in _forms(value):
+                    assert form not in task.id.lower(), (task.id, key, value)
+    assert checked > 1000

@@ -12,8 +12,8 @@ import pytest
 
 from ewa_mcp.indoor.planner import scene_inventory
 from ewa_mcp.paths import tasks_dir
-from ewa_mcp.taskgen.cooking import KITCHEN_SCOPE, singles_out
-from ewa_mcp.taskgen.recipe_goals import goals_from_ops, recipe_ops
+from ewa_mcp.taskgen.cooking import KITCHEN_SCOPE, kitchen_equipment, singles_out
+from ewa_mcp.taskgen.recipe_goals import PIECE_SOURCE, goals_from_ops, recipe_ops
 from ewa_mcp.taskmodel import TaskStore
 from ewa_mcp.websites.recipes.build_recipes import products_in
 from ewa_mcp.websites.recipes.catalog import get_recipe, load_catalog
@@ -85,7 +85,7 @@ def test_buy_tasks_are_one_consistent_chain(tasks):
 def test_difficulty_follows_the_template_and_enough_are_hard(tasks):
     kinds = Counter()
     for task in tasks:
-        kind = task.id.split("-")[2]
+        kind = task.id.split("-")[1]
         kinds[kind] += 1
         assert task.difficulty == {"cook": "easy", "buy": "medium", "hard": "hard"}[kind], task.id
     assert kinds["hard"] >= 0.15 * len(tasks), kinds
@@ -104,3 +104,54 @@ def test_difficulty_follows_the_template_and_enough_are_hard(tasks):
             filters[key] = [*filters.get(key, []), value] if key in ("include", "exclude", "equipment") else value
         assert singles_out(recipe, catalog, filters), task.id
         assert len(task.metadata["buy"]) == 2
+
+
+def test_every_cooking_kitchen_has_the_equipment_its_steps_and_goals_need(tasks):
+    """No template (cook, buy, hard) sends the agent to a kitchen without the pan the step fries in, the
+    bowl the goal wants the food in, ...: the shop sells food only, so equipment cannot be bought."""
+    for task in tasks:
+        recipe = get_recipe(task.metadata["recipe_id"])
+        inventory = scene_inventory(task.start.embodied.scene)
+        have = inventory["tools"] | inventory["receptacles"]
+        needed = kitchen_equipment(recipe) | {g.receptacle_type for g in task.embodied_goals
+                                              if g.kind == "object_in"}
+        needed -= {"CounterTop", "DiningTable"}  # furniture, in every kitchen
+        assert needed <= have, (task.id, task.start.embodied.scene, sorted(needed - have))
+        for step in recipe["steps"]:  # a stove step's vessel is the one its note names
+            for op in step["ops"]:
+                if op["op"] == "cook" and op["method"] == "stove":
+                    assert op["vessel"].lower() in step["kitchen"].lower().split(), (task.id, step["kitchen"])
+
+
+def test_cooking_goals_are_stated_in_the_kitchen_notes(tasks):
+    """What a placing goal checks (cooked, cut; one slice is enough) is said in the note of the step that
+    places the food, not left for the agent to infer from an earlier step."""
+    cooked_words = ("fried", "boiled", "toasted", "microwaved")
+    for recipe_id in sorted({t.metadata["recipe_id"] for t in tasks}):
+        recipe = get_recipe(recipe_id)
+        last_note: dict[str, str] = {}
+        for step in recipe["steps"]:
+            for op in step["ops"]:
+                if op["op"] == "put":
+                    last_note[PIECE_SOURCE.get(op["object"], op["object"])] = step["kitchen"]
+        for goal in goals_from_ops(recipe_ops(recipe)):
+            if goal.kind != "object_in":
+                continue
+            note = last_note[goal.object_type]
+            clause = [c for c in re.split(r"(?:, (?:then |and )?| and )", note)
+                      if goal.object_type.lower() in c.lower()][-1]  # the placing clause comes last
+            if goal.with_state.get("isCooked"):
+                assert any(w in clause for w in cooked_words), (recipe_id, goal, note)
+            if goal.with_state.get("isSliced") and goal.object_type != "Egg":
+                assert "(one slice or more)" in clause, (recipe_id, goal, note)
+
+
+def test_task_ids_do_not_name_their_recipe(tasks):
+    """The recipe id is the recipe page's URL (/recipe/r071): an id carrying it would skip the search."""
+    from ewa_mcp.websites.recipes.catalog import load_catalog as catalog
+
+    slugs = {r["id"]: re.sub(r"[^a-z0-9]+", "-", r["name"].lower()).strip("-") for r in catalog().recipes}
+    for task in tasks:
+        rid = task.metadata["recipe_id"]
+        assert re.fullmatch(r"cooking-(cook|buy|hard)-\d{4}", task.id), task.id
+        assert rid not in task.id and slugs[rid] not in task.id, task.id

@@ -144,3 +144,18 @@ def test_scene_inventory():
     assert {"Pan", "Pot", "Knife", "Bowl", "Plate"} <= inv["tools"]
     assert {"Microwave", "Toaster", "Fridge", "StoveBurner", "CounterTop"} <= inv["receptacles"]
     assert not inv["food"] & inv["tools"]
+
+
+def test_a_stove_cook_uses_the_vessel_the_recipe_names():
+    """'Fry it in the pan' is cooked in a Pan, never in a Pot the planner happens to find first, and a
+    kitchen without that vessel cannot do the step."""
+    egg = [{"op": "crack", "object": "Egg"}]
+    in_pot = egg + [{"op": "cook", "object": "EggCracked", "method": "stove", "vessel": "Pot"}]
+    calls = plan_ops("FloorPlan2", in_pot)  # has both a Pan and a Pot
+    assert any(c["args"].get("receptacle", "").startswith("Pot_") or c["args"].get("object", "").startswith("Pot_")
+               for c in calls)
+    assert not any("Pan_" in str(c["args"]) for c in calls)
+    ok, reason = check_recipe_executable("FloorPlan27", egg + [{"op": "cook", "object": "EggCracked",
+                                                               "method": "stove", "vessel": "Pan"}],
+                                         available_extra_types=("Egg",))
+    assert not ok and "Pan" in reason

@@ -220,3 +220,24 @@ def test_final_state_contract():
     assert pieces and all(p["sourceType"] == "Tomato" and p["parentReceptacles"][0] == container for p in pieces)
     knife = next(o for o in state["objects"] if o["objectId"] == s.held_id)
     assert knife["isPickedUp"] and knife["parentReceptacles"] is None
+
+
+def test_a_missing_type_is_called_buyable_only_when_the_shop_sells_it():
+    """The shop sells food only: a missing Pan is not 'bought on the shopping site'; the error names what to
+    use instead when the kitchen has it, and says plainly that the shop does not sell it otherwise."""
+    from ewa_mcp.indoor.vocabulary import SHOP_SOLD_TYPES
+    from ewa_mcp.websites.shop.catalog import load_products
+
+    assert SHOP_SOLD_TYPES == {p.kitchen_type for p in load_products() if p.kitchen_type}
+
+    s = new_session("FloorPlan27")  # a Pot but no Pan, no SaltShaker
+    assert not ids_of(s, "Pan") and ids_of(s, "Pot")
+    with pytest.raises(KitchenActionError) as err:
+        s.resolve("Pan", "teleport")
+    assert "bought" not in str(err.value) and "Use a Pot instead" in str(err.value)
+    with pytest.raises(KitchenActionError) as err:
+        s.resolve("SaltShaker", "teleport")
+    assert "bought" not in str(err.value) and "does not sell" in str(err.value)
+    s = new_session("FloorPlan3")  # no Potato: food the shop sells
+    with pytest.raises(KitchenActionError, match="can be bought on the shopping site"):
+        s.resolve("Potato", "teleport")

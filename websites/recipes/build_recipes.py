@@ -100,9 +100,9 @@ def _op_code(code: str, arg: str | None, where: str) -> tuple[list[dict[str, Any
     if code == "crack":
         return [{"op": "crack", "object": "Egg"}], set()
     if code == "fry":
-        return [{"op": "cook", "object": need_arg(), "method": "stove"}], {"Pan"}
+        return [{"op": "cook", "object": need_arg(), "method": "stove", "vessel": "Pan"}], {"Pan"}
     if code == "boil":
-        return [{"op": "cook", "object": need_arg(), "method": "stove"}], {"Pot"}
+        return [{"op": "cook", "object": need_arg(), "method": "stove", "vessel": "Pot"}], {"Pot"}
     if code == "toast":
         return [{"op": "cook", "object": "BreadSliced", "method": "toaster"}], set()
     if code == "microwave":
@@ -126,7 +126,26 @@ def _op_code(code: str, arg: str | None, where: str) -> tuple[list[dict[str, Any
                     "bowl, pan, pot, counter, chill, fetch, stoveon, stoveoff, or ': text' for a plain step")
 
 
-def _default_text(code: str, arg: str | None, salt: str) -> str:
+# Codes that move a food somewhere: their wording names the food with the state the kitchen goal
+# checks there (cooked, cut), so a goal never asks for more than the step says (issue: "the egg" in a
+# bowl must be the fried egg; "some slices" must say that one slice is enough).
+PLACING = ("plate", "bowl", "pan", "pot", "counter", "chill", "fetch")
+COOKED_WORD = {"fry": "fried", "boil": "boiled", "toast": "toasted", "microwave": "microwaved"}
+SLICE_NOUN = {"AppleSliced": "apple slices", "BreadSliced": "bread slices", "LettuceSliced": "lettuce slices",
+              "PotatoSliced": "potato slices", "TomatoSliced": "tomato slices"}
+
+
+def placed_noun(arg: str, cooked: dict[str, str]) -> str:
+    """How a placing step names a food: 'fried egg', 'toasted bread slices (one slice or more)'."""
+    noun = SLICE_NOUN.get(arg, NOUN.get(arg, ""))
+    if arg in cooked:
+        noun = f"{cooked[arg]} {noun}"
+    if arg in SLICE_NOUN:
+        noun += " (one slice or more)"
+    return noun
+
+
+def _default_text(code: str, arg: str | None, salt: str, cooked: dict[str, str] | None = None) -> str:
     if code == "slice":
         options = SLICE_WORDS[arg or ""]
     elif arg == "EggCracked" and code in EGG_WORDING:
@@ -134,7 +153,8 @@ def _default_text(code: str, arg: str | None, salt: str) -> str:
     else:
         options = WORDING[code]
     choice = options[zlib.crc32(salt.encode()) % len(options)]
-    return choice.format(x=NOUN.get(arg or "", ""))
+    noun = placed_noun(arg or "", cooked or {}) if code in PLACING else NOUN.get(arg or "", "")
+    return choice.format(x=noun)
 
 
 # ------------------------------------------------------------------ ingredients from text
@@ -285,6 +305,7 @@ def build_recipe(dish: Dish, variant: Variant, recipe_id: str, source: str = "di
     products: list[str] = []
     equipment: set[str] = set(variant.extra_equipment)
     minutes = 5
+    cooked: dict[str, str] = {}  # piece or food type -> how it was cooked ("fried"), for later placing steps
     for index, (custom, codes, number) in enumerate(variant.steps, start=1):
         where = f"{source}:{number}"
         ops: list[dict[str, Any]] = []
@@ -297,13 +318,15 @@ def build_recipe(dish: Dish, variant: Variant, recipe_id: str, source: str = "di
                 equipment |= required_equipment(op)
                 if op["op"] in ("slice", "crack", "cook", "put") and source_of(op["object"]) not in kitchen:
                     kitchen.append(source_of(op["object"]))
-            texts.append(_default_text(code, arg, f"{dish.name}|{recipe_id}|{index}|{code}"))
+            texts.append(_default_text(code, arg, f"{dish.name}|{recipe_id}|{index}|{code}", cooked))
+            if code in COOKED_WORD:
+                cooked[arg or "BreadSliced"] = COOKED_WORD[code]
             minutes += MINUTES.get(code, 1)
         same_put = len(codes) > 1 and len({c for c, _ in codes}) == 1 and codes[0][0] in ("plate", "bowl")
         generated: str | None = None  # the step in the kitchen's own words, from its ops alone
         if same_put:
             # "Put the egg and the potato slices on a plate." rather than one clause per piece.
-            things = [f"the {NOUN[arg or '']}" for _, arg in codes]
+            things = [f"the {placed_noun(arg or '', cooked)}" for _, arg in codes]
             where = "on a plate" if codes[0][0] == "plate" else "in a bowl"
             generated = f"Put {', '.join(things[:-1])} and {things[-1]} {where}."
         elif texts:

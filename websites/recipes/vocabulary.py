@@ -25,6 +25,7 @@ PIECE_SOURCE: dict[str, str] = {
 # Only these become isCooked in AI2-THOR; cooking anything else would be a step the kitchen cannot show.
 COOKABLE: frozenset[str] = frozenset({"Potato", "PotatoSliced", "BreadSliced", "EggCracked"})
 COOK_METHODS: tuple[str, ...] = ("stove", "microwave", "toaster")
+STOVE_VESSELS: tuple[str, ...] = ("Pan", "Pot")  # what a stove cook op may name as its "vessel"
 RECEPTACLES: tuple[str, ...] = ("Plate", "Bowl", "Pan", "Pot", "CounterTop", "DiningTable", "Fridge")
 OPENABLE: tuple[str, ...] = ("Fridge", "Microwave")
 TOGGLEABLE: tuple[str, ...] = ("StoveBurner", "Microwave", "Toaster")
@@ -105,7 +106,8 @@ def required_equipment(op: dict[str, Any]) -> set[str]:
             return {"Toaster"}
         if method == "microwave":
             return {"Microwave"}
-        return {"StoveBurner"}  # plus a Pan or a Pot, checked separately
+        # the vessel the step names ("fry" -> Pan, "boil" -> Pot); without one, a Pan or a Pot, checked separately
+        return {"StoveBurner"} | ({op["vessel"]} if op.get("vessel") in STOVE_VESSELS else set())
     if kind == "put":
         receptacle = op.get("receptacle", "")
         return set() if receptacle in FURNITURE else {receptacle}
@@ -123,6 +125,10 @@ def _op_problems(op: Any) -> list[str]:
         return [f"unknown op {kind!r}; use one of {', '.join(OPS)}"]
     expected = {"slice": {"op", "object"}, "crack": {"op", "object"}, "cook": {"op", "object", "method"},
                 "put": {"op", "object", "receptacle"}}.get(kind, {"op", "object"})
+    if kind == "cook" and op.get("method") == "stove" and "vessel" in op:
+        expected = expected | {"vessel"}
+        if op["vessel"] not in STOVE_VESSELS:
+            return [f"a stove cook op's vessel is one of {', '.join(STOVE_VESSELS)}, not {op['vessel']!r}"]
     if set(op) != expected:
         return [f"{kind} op must have exactly the keys {sorted(expected)}, got {sorted(op)}"]
     obj = op["object"]
