@@ -18,6 +18,7 @@ the tasks ``ewa_mcp/cooking``, ``ewa_mcp/navigation``, ``ewa_mcp/shopping``, ``e
 from __future__ import annotations
 
 import atexit
+import json
 import subprocess
 import sys
 import time
@@ -142,8 +143,14 @@ def _first_message(task_id: str, start: Any, send_images: bool) -> ChatMessageUs
 
 
 async def _status(client: Client, episode_id: str) -> str:
-    result = await client.call_tool("episode_status", {"episode_id": episode_id})
-    return (result.structured_content or {}).get("status", "unknown")
+    """The episode's status, read from its state resource: a harness's look is not the agent's step (calling
+    the episode_status tool would use one and write a line into the agent's trajectory)."""
+    result = await client.read_resource(f"ewa://episodes/{episode_id}/state")
+    texts = [getattr(c, "text", "") for c in result.contents]
+    try:
+        return json.loads(texts[0]).get("status", "unknown") if texts else "unknown"
+    except ValueError:
+        return "unknown"
 
 
 # ---------------------------------------------------------------- solver

@@ -7,6 +7,7 @@ is downloaded on first use (no network here)."""
 
 from __future__ import annotations
 
+import json
 import re
 
 import pytest
@@ -73,6 +74,11 @@ def test_scripted_oracle_scores_one_on_every_domain(tmp_path):
     assert metrics["geo_country"].value == 1.0
     # Every sample's episode was recorded where the grader reads it.
     assert len(list((tmp_path / "run").glob("*/final_state.json"))) == len(inspect_tasks.DOMAINS)
+    # The harness's own status checks are not the model's steps: every trajectory line is a model's call
+    # (or the harness's start and, for a model that stopped early, its finish).
+    for trajectory in (tmp_path / "run").glob("*/trajectory.jsonl"):
+        tools = [json.loads(line)["tool"] for line in trajectory.read_text().splitlines()]
+        assert "episode_status" not in tools, trajectory
 
 
 def test_a_model_that_only_talks_scores_zero(tmp_path):
