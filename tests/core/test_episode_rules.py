@@ -4,22 +4,17 @@ refuse episodes of another domain, and errors that never echo a huge value back.
 from __future__ import annotations
 
 import json
-import os
-import socket
-import subprocess
-import sys
-import time
 from pathlib import Path
 from typing import Any
 
 import anyio
-import httpx
 import pytest
 from mcp import Client
 
 from ewa_mcp.server import ServerConfig, build_server
 
 from .fixtures import CounterEnv, NoteEnv, counter_task, register, write_tasks
+from .servers import serve, stop
 
 pytestmark = pytest.mark.anyio
 
@@ -173,12 +168,6 @@ async def test_geolocation_and_domain_tools_refuse_other_domains(tmp_path):
         assert not r.is_error and episodes.get(gep).status == "finished"
 
 
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
 def _kitchen_only_task() -> dict[str, Any]:
     return {"id": "race-kitchen", "domain": "cooking", "intent": "Turn around, then finish.",
             "start": {"environment": "embodied", "embodied": {"kind": "kitchen", "scene": "FloorPlan28", "seed": 0}},
@@ -187,19 +176,8 @@ def _kitchen_only_task() -> dict[str, Any]:
 
 async def test_finish_is_atomic_over_http(tmp_path):
     tasks = write_tasks(tmp_path / "tasks", [_kitchen_only_task()])
-    port = _free_port()
-    env = {**os.environ, "EWA_RUNS_DIR": str(tmp_path / "runs")}
-    proc = subprocess.Popen([sys.executable, "-m", "ewa_mcp", "serve", "--transport", "http", "--port", str(port),
-                             "--tasks", str(tasks)], env=env, stderr=subprocess.PIPE)
+    proc, port = serve(tmp_path, "--tasks", str(tasks))
     try:
-        deadline = time.monotonic() + 60
-        while True:
-            try:
-                httpx.get(f"http://127.0.0.1:{port}/mcp", timeout=1)
-                break
-            except httpx.TransportError:
-                assert proc.poll() is None and time.monotonic() < deadline, proc.stderr.read().decode()[-2000:]
-                time.sleep(0.1)
         async with Client(f"http://127.0.0.1:{port}/mcp") as client:
             r = await client.call_tool("start_episode", {"task_id": "race-kitchen"})
             assert not r.is_error, text_of(r)
@@ -216,8 +194,7 @@ async def test_finish_is_atomic_over_http(tmp_path):
                 # the kitchen's final heading shows exactly the rotations recorded before the finish
                 assert (start_heading + 90 * applied) % 360 == _heading(ep_dir)
     finally:
-        proc.terminate()
-        proc.wait(timeout=10)
+        stop(proc)
 
 
 def _episode_dir(tmp_path: Path, ep: str) -> Path:

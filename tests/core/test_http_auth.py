@@ -5,16 +5,16 @@ from __future__ import annotations
 
 import os
 import re
-import socket
 import subprocess
 import sys
-import time
 
 import httpx
 import pytest
 from mcp import Client
 from mcp.client.streamable_http import streamable_http_client
 from mcp.shared._httpx_utils import create_mcp_http_client
+
+from .servers import serve, stop
 
 pytestmark = pytest.mark.anyio
 
@@ -23,40 +23,6 @@ INITIALIZE = {"jsonrpc": "2.0", "id": 1, "method": "initialize",
               "params": {"protocolVersion": "2025-06-18", "capabilities": {},
                          "clientInfo": {"name": "probe", "version": "0"}}}
 HEADERS = {"Accept": "application/json, text/event-stream", "Content-Type": "application/json"}
-
-
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-def _serve(tmp_path, *args: str, env: dict[str, str] | None = None) -> tuple[subprocess.Popen, int]:
-    port = _free_port()
-    environ = {k: v for k, v in os.environ.items() if k != "EWA_MCP_TOKEN"}
-    environ.update({"EWA_RUNS_DIR": str(tmp_path / "runs"), **(env or {})})
-    proc = subprocess.Popen([sys.executable, "-m", "ewa_mcp", "serve", "--transport", "http", "--port", str(port),
-                             *args], env=environ, stderr=subprocess.PIPE, text=True)
-    deadline = time.monotonic() + 60
-    while True:
-        try:
-            httpx.get(f"http://127.0.0.1:{port}/mcp", timeout=1)
-            return proc, port
-        except httpx.TransportError:
-            if proc.poll() is not None or time.monotonic() > deadline:
-                proc.kill()
-                raise AssertionError(f"the server did not start: {proc.stderr.read()}")
-            time.sleep(0.1)
-
-
-def _stop(proc: subprocess.Popen) -> str:
-    proc.terminate()
-    try:
-        _, err = proc.communicate(timeout=20)
-    except subprocess.TimeoutExpired:
-        proc.kill()
-        _, err = proc.communicate()
-    return err
 
 
 def _initialize(port: int, authorization: str | None = None) -> httpx.Response:
@@ -85,7 +51,7 @@ async def _play(port: int, token: str) -> None:
 @pytest.mark.parametrize("how", ["flag", "env"])
 async def test_a_given_token_is_required_on_every_request(tmp_path, how):
     args, env = (["--token", TOKEN], None) if how == "flag" else ([], {"EWA_MCP_TOKEN": TOKEN})
-    proc, port = _serve(tmp_path, *args, env=env)
+    proc, port = serve(tmp_path, *args, env=env)
     try:
         _assert_refused(_initialize(port), "no Authorization header")
         _assert_refused(_initialize(port, "Bearer not-the-token-at-all-000"), "the bearer token is wrong")
@@ -100,12 +66,12 @@ async def test_a_given_token_is_required_on_every_request(tmp_path, how):
             async with Client(f"http://127.0.0.1:{port}/mcp") as client:
                 await client.list_tools()
     finally:
-        err = _stop(proc)
+        err = stop(proc)
     assert TOKEN not in err  # a given token is never echoed
 
 
 async def test_serving_past_loopback_generates_and_prints_a_token(tmp_path):
-    proc, port = _serve(tmp_path, "--host", "0.0.0.0", "--allow-remote")
+    proc, port = serve(tmp_path, "--host", "0.0.0.0", "--allow-remote")
     try:
         printed: list[str] = []  # all printed before the port opened, the endpoint last
         while not printed or not (printed[-1].startswith("MCP endpoint") or printed[-1] == ""):
@@ -119,7 +85,7 @@ async def test_serving_past_loopback_generates_and_prints_a_token(tmp_path):
         assert _initialize(port, f"Bearer {token}").status_code == 200
         await _play(port, token)
     finally:
-        err = _stop(proc)
+        err = stop(proc)
     assert token not in err  # shown once
 
 

@@ -3,14 +3,13 @@
 from __future__ import annotations
 
 import os
-import socket
 import subprocess
 import sys
-import time
 
-import httpx
 import pytest
 from mcp import Client, StdioServerParameters
+
+from .servers import serve, stop
 
 pytestmark = pytest.mark.anyio
 
@@ -39,26 +38,13 @@ async def test_stdio_server(tmp_path):
 
 
 async def test_http_server(tmp_path):
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        port = s.getsockname()[1]
-    proc = subprocess.Popen([sys.executable, "-m", "ewa_mcp", "serve", "--transport", "http", "--port", str(port)],
-                            env=_env(tmp_path), stderr=subprocess.PIPE)
+    proc, port = serve(tmp_path)
     try:
-        deadline = time.monotonic() + 30
-        while time.monotonic() < deadline:
-            try:
-                httpx.get(f"http://127.0.0.1:{port}/mcp", timeout=1)
-                break
-            except httpx.TransportError:
-                assert proc.poll() is None, proc.stderr.read().decode()
-                time.sleep(0.1)
         async with Client(f"http://127.0.0.1:{port}/mcp") as client:
             ep = await _play(client)
         assert list((tmp_path / "runs").glob(f"*/{ep}/final_state.json"))
     finally:
-        proc.terminate()
-        proc.wait(timeout=10)
+        stop(proc)
 
 
 def test_http_refuses_public_host_without_flag(tmp_path):
