@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import random
 from collections.abc import Callable
+from typing import Any
 
 from PIL import ImageDraw
 
@@ -32,6 +33,16 @@ def _shade(hex_colour: str, factor: float) -> RGB:
 
 
 # ------------------------------------------------------------------------------ front-on rows
+def _bond(draw: ImageDraw.ImageDraw, box: tuple[int, int, int, int], joint: Any, course: int, length: int) -> None:
+    """Running bond: horizontal joints every ``course`` px, vertical ones every ``length`` px, offset by half a unit
+    on alternate courses (brick and ashlar walls alike)."""
+    x0, top, x1, base = box
+    for row, y in enumerate(range(top + course - 1, base, course)):
+        draw.line([(x0, y), (x1, y)], fill=joint)
+        for x in range(x0 + (length // 2 if row % 2 else 0), x1, length):
+            draw.line([(x, y - course), (x, y)], fill=joint)
+
+
 def wall_texture(draw: ImageDraw.ImageDraw, box: tuple[int, int, int, int], colour: str, arch: ArchStyle,
                  rng: random.Random) -> None:
     """Material texture over a front-on wall ``box`` (x0, top, x1, base)."""
@@ -42,17 +53,9 @@ def wall_texture(draw: ImageDraw.ImageDraw, box: tuple[int, int, int, int], colo
         for x in range(x0 + 4, x1, 8):
             draw.line([(x, top), (x, base)], fill=(236, 240, 246))
     elif arch.material == "brick" or colour in arch.brick_colours:
-        mortar = _shade(colour, 1.28)
-        for row, y in enumerate(range(top + 5, base, 6)):
-            draw.line([(x0, y), (x1, y)], fill=mortar)
-            for x in range(x0 + (9 if row % 2 else 0), x1, 18):
-                draw.line([(x, y - 6), (x, y)], fill=mortar)
+        _bond(draw, box, _shade(colour, 1.28), course=6, length=18)  # light mortar, small bricks
     elif arch.material == "stone":
-        joint = _shade(colour, 0.78)
-        for row, y in enumerate(range(top + 11, base, 12)):
-            draw.line([(x0, y), (x1, y)], fill=joint)
-            for x in range(x0 + (16 if row % 2 else 0), x1, 32):
-                draw.line([(x, y - 12), (x, y)], fill=joint)
+        _bond(draw, box, _shade(colour, 0.78), course=12, length=32)  # dark joints, large blocks
     elif arch.material == "wood":
         slat = _shade(colour, 0.7)
         for x in range(x0 + 3, x1, 5):

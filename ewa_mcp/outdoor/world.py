@@ -513,15 +513,8 @@ def label_streets(graph: CityGraph, label: str) -> tuple[list[set[int]], bool]:
 def label_corner(graph: CityGraph, label: str, lat: float, lng: float) -> int | None:
     """The corner a label names (the one nearest the place when streets meet twice); None if it names none."""
     streets, _ = label_streets(graph, label)
-    best: set[int] = set()
-    for k in range(len(streets), 1, -1):  # all named streets meeting, else any two of them
-        for a in range(len(streets)):
-            for b in range(a + 1, len(streets)):
-                both = streets[a] & streets[b]
-                best |= both
-        if best:
-            break
-    return graph.nearest(lat, lng, best) if best else None
+    corners = {i for a in range(len(streets)) for b in range(a + 1, len(streets)) for i in streets[a] & streets[b]}
+    return graph.nearest(lat, lng, corners) if corners else None
 
 
 def label_fits(graph: CityGraph, label: str, node: int) -> bool:

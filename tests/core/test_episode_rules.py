@@ -48,7 +48,7 @@ def trajectory(run: Path, ep: str) -> list[dict[str, Any]]:
 
 
 def check_race(lines: list[dict[str, Any]], results: list[tuple[str, Any]], final: dict[str, Any],
-               add_tool: str) -> None:
+               add_tool: str) -> int:
     """Nothing after the finishing line; every racing call either happened before it or was refused."""
     finish_at = [i for i, x in enumerate(lines) if x["tool"] in ("finish_episode", "submit_location") and x["ok"]]
     assert len(finish_at) == 1 and finish_at[0] == len(lines) - 1, "a call was recorded after the finish"
