@@ -133,6 +133,31 @@ def _bind_episode(tool: Any, episode_id: str) -> Any:
     return ToolDef(execute, name=td.name, description=td.description, parameters=params).as_tool()
 
 
+def _chars_per_token_estimate(text: str) -> int:
+    """About four characters a token: an offline estimate (no tokenizer file, no download)."""
+    return max(1, -(-len(text) // 4))
+
+
+def offline_token_counts(model: Any) -> Any:
+    """Inspect's ``mockllm`` provider fills in the usage of an output that has none by counting tokens with
+    tiktoken's ``o200k_base`` encoding, which tiktoken downloads on first use: an unscripted
+    ``--model mockllm/model`` then fails offline. For that provider only, count text tokens with a
+    characters-per-token estimate instead (a mock's usage is made up either way); real providers report
+    their own usage and are left alone."""
+    try:
+        from inspect_ai.model._providers.mockllm import MockLLM
+    except ImportError:  # a future Inspect that moved it: nothing to adjust
+        return model
+    api = getattr(model, "api", None)
+    if isinstance(api, MockLLM) and getattr(api, "count_text_tokens", None) is not _async_estimate:
+        api.count_text_tokens = _async_estimate
+    return model
+
+
+async def _async_estimate(text: str) -> int:
+    return _chars_per_token_estimate(text)
+
+
 def _first_message(task_id: str, start: Any, send_images: bool) -> ChatMessageUser:
     texts = [getattr(c, "text", "") for c in start.content if getattr(c, "type", "") == "text"]
     content: list[Any] = [ContentText(text=f"Task id: {task_id}\n" + "\n".join(texts))]
@@ -175,7 +200,7 @@ def ewa_agent(run_dir: str, task_dirs: list[str], observation: str = "text", max
             state.messages = [ChatMessageSystem(content=SYSTEM_PROMPT),
                               _first_message(str(state.sample_id), start, observation != "text")]
             state.tools = tools
-            model = get_model()
+            model = offline_token_counts(get_model())
             nudged = False
             for _ in range(max_turns or int(state.metadata.get("step_limit") or 60)):
                 output = await model.generate(state.messages, tools)

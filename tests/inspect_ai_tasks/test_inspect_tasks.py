@@ -1,9 +1,10 @@
 """The Inspect AI tasks end to end, offline: Inspect's mockllm model, scripted to make each task's oracle
 calls as model tool calls, plays one task of every domain through the real MCP server and Inspect's MCP
-tools; the project's grader scores 1.0. A scripted model that only talks scores 0.
+tools; the project's grader scores 1.0. The unscripted mockllm (its default output only talks) scores 0.
 
-Scripted outputs carry their token usage: mockllm otherwise counts tokens with tiktoken, whose encoding
-is downloaded on first use (no network here)."""
+No output here carries its token usage, so mockllm counts tokens itself: the harness must give it an
+offline estimate, because Inspect's default counter loads tiktoken's o200k_base encoding, which tiktoken
+downloads on first use (the tests fail if anything asks tiktoken for an encoding)."""
 
 from __future__ import annotations
 
@@ -15,18 +16,24 @@ import pytest
 pytest.importorskip("inspect_ai")
 
 from inspect_ai import eval as inspect_eval  # noqa: E402
-from inspect_ai.model import ModelOutput, ModelUsage, get_model  # noqa: E402
+from inspect_ai.model import ModelOutput, get_model  # noqa: E402
 
 from ewa_mcp import inspect_tasks  # noqa: E402
 from ewa_mcp.paths import tasks_dir  # noqa: E402
 from ewa_mcp.taskmodel import TaskStore  # noqa: E402
 
-USAGE = ModelUsage(input_tokens=10, output_tokens=5, total_tokens=15)
 
 
-def _with_usage(output: ModelOutput) -> ModelOutput:
-    output.usage = USAGE
-    return output
+@pytest.fixture(autouse=True)
+def no_tokenizer_download(monkeypatch):
+    """tiktoken's encodings are downloaded on first use: asking for one is a failure here, network or not."""
+    tiktoken = pytest.importorskip("tiktoken")
+
+    def refuse(name, *args, **kwargs):
+        raise AssertionError(f"tiktoken.get_encoding({name!r}) was called: it downloads {name} at run time")
+
+    monkeypatch.setattr(tiktoken, "get_encoding", refuse)
+    monkeypatch.setattr(tiktoken, "encoding_for_model", refuse)
 
 
 def oracle_model():
@@ -40,14 +47,14 @@ def oracle_model():
         turn = sum(m.role == "assistant" for m in messages)
         call = oracle[turn] if turn < len(oracle) else None
         tool, args = (call.tool, call.args) if call else ("finish_episode", {})
-        return _with_usage(ModelOutput.for_tool_call("mockllm/model", tool, dict(args)))
+        return ModelOutput.for_tool_call("mockllm/model", tool, dict(args))
 
-    return get_model("mockllm/model", custom_outputs=outputs)
+    return get_model("mockllm/model", custom_outputs=outputs, memoize=False)
 
 
 def talking_model():
-    return get_model("mockllm/model", custom_outputs=lambda *a: _with_usage(
-        ModelOutput.from_content("mockllm/model", "I would walk there and look around.")))
+    """``--model mockllm/model`` as a user gives it: no script, its default output is prose."""
+    return get_model("mockllm/model", memoize=False)
 
 
 def _run(task, model, tmp_path):
