@@ -51,3 +51,28 @@ def test_example_agent_plays_and_records(example, key, tmp_path, monkeypatch):
     assert "unknown tool" in third and "no_such_tool" in third
     second = json.dumps(model.requests[1])
     assert "this episode has no environment" in second or "step 0/10" in second
+
+
+@pytest.mark.parametrize("example, key", [("claude_agent", "ANTHROPIC_API_KEY"), ("openai_agent", "OPENAI_API_KEY")])
+def test_example_agent_plays_a_task_oracle_over_stdio_and_scores_one(example, key, tmp_path, monkeypatch):
+    """The scripted-model trick of the Inspect tests, through each example's own path: the model's tool calls
+    are a real task's oracle, the server is the default `ewa-mcp serve` over stdio, the grader scores 1.0."""
+    from ewa_mcp.graders import grade_episode
+    from ewa_mcp.paths import tasks_dir
+    from ewa_mcp.taskmodel import TaskStore
+
+    monkeypatch.setenv(key, "test-key")
+    task = TaskStore([tasks_dir()]).all("geolocation")[0]
+    model = ScriptedModel([(call.tool, dict(call.args)) for call in task.oracle])
+    run_dir = tmp_path / "run"
+    with FakeLLMServer(model) as server:
+        base = server.url + ("" if example == "claude_agent" else "/v1")
+        rc = load_example(example).main(["--model", "scripted", "--base-url", base, "--tasks", task.id,
+                                         "--run-dir", str(run_dir), "-q"])  # default transport: stdio
+    assert rc == 0
+    (episode,) = [p for p in run_dir.iterdir() if p.is_dir()]
+    result = grade_episode(episode)
+    assert result.overall_success and result.completion == 1.0, (result.error, result.conditions_met)
+    assert result.geolocation and all(result.geolocation.get(level) for level in ("continent", "country", "city"))
+    tools = [json.loads(x)["tool"] for x in (episode / "trajectory.jsonl").read_text().splitlines()]
+    assert tools == ["start_episode", *(call.tool for call in task.oracle)]
