@@ -1,7 +1,8 @@
-"""How fast `ewa-mcp serve` (stdio) answers `initialize`: spawn to the first answer, several runs.
+"""How fast `ewa-mcp serve` (stdio) answers `initialize`: spawn to the first answer, several runs; and
+spawn to the answer of the first `tools/list` that follows (the first answer a client can act on).
 
-Prints the median and the worst time, with the machine's load average (a busy machine is slower;
-the target, 0.5 s, is for a quiet one). docs/performance.md records the figure.
+Prints the medians and the worst times, with the machine's load average (a busy machine is slower;
+the target, 0.5 s to `initialize`, is for a quiet one). docs/performance.md records the figures.
 
     .venv/bin/python benchmarks/bench_startup.py [--runs N]
 """
@@ -24,22 +25,42 @@ INITIALIZE = {
 }
 
 
-def time_initialize(run_dir: str) -> float:
-    """Seconds from spawning the server to reading its answer to initialize."""
+INITIALIZED = {"jsonrpc": "2.0", "method": "notifications/initialized"}
+TOOLS_LIST = {"jsonrpc": "2.0", "id": 2, "method": "tools/list"}
+
+
+def _answer(proc: subprocess.Popen, request_id: int, what: str) -> dict:
+    assert proc.stdout is not None
+    line = proc.stdout.readline()
+    answer = json.loads(line) if line else {}
+    if answer.get("id") != request_id or "result" not in answer:
+        raise SystemExit(f"unexpected answer to {what}: {line[:200]!r}")
+    return answer
+
+
+def _send(proc: subprocess.Popen, message: dict) -> None:
+    assert proc.stdin is not None
+    proc.stdin.write((json.dumps(message) + "\n").encode())
+    proc.stdin.flush()
+
+
+def time_initialize(run_dir: str) -> tuple[float, float]:
+    """Seconds from spawning the server to reading its answer to initialize, and to its tool list."""
     started = time.perf_counter()
     proc = subprocess.Popen([sys.executable, "-m", "ewa_mcp", "serve", "--run-dir", run_dir],
                             stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
     try:
-        assert proc.stdin is not None and proc.stdout is not None
-        proc.stdin.write((json.dumps(INITIALIZE) + "\n").encode())
-        proc.stdin.flush()
-        line = proc.stdout.readline()
-        elapsed = time.perf_counter() - started
-        answer = json.loads(line)
-        if answer.get("id") != 1 or "result" not in answer:
-            raise SystemExit(f"unexpected answer to initialize: {line[:200]!r}")
-        return elapsed
+        _send(proc, INITIALIZE)
+        _answer(proc, 1, "initialize")
+        initialized = time.perf_counter() - started
+        _send(proc, INITIALIZED)
+        _send(proc, TOOLS_LIST)
+        tools = _answer(proc, 2, "tools/list")["result"]["tools"]
+        if not tools:
+            raise SystemExit("the server listed no tools")
+        return initialized, time.perf_counter() - started
     finally:
+        assert proc.stdin is not None
         proc.stdin.close()
         try:
             proc.wait(timeout=20)
@@ -53,9 +74,11 @@ def main() -> int:
     args = parser.parse_args()
     with tempfile.TemporaryDirectory(prefix="ewa-bench-startup-") as run_dir:
         time_initialize(run_dir)  # warm the OS file cache and the .pyc files
-        times = [time_initialize(run_dir) for _ in range(args.runs)]
+        runs = [time_initialize(run_dir) for _ in range(args.runs)]
     load = os.getloadavg()
-    print(f"serve -> initialize answered: median {statistics.median(times):.3f} s, worst {max(times):.3f} s "
+    init, listed = [r[0] for r in runs], [r[1] for r in runs]
+    print(f"serve -> initialize answered: median {statistics.median(init):.3f} s, worst {max(init):.3f} s; "
+          f"tools/list answered: median {statistics.median(listed):.3f} s, worst {max(listed):.3f} s; "
           f"over {args.runs} runs; load average {load[0]:.2f} {load[1]:.2f} {load[2]:.2f} "
           f"on {os.cpu_count()} CPUs")
     return 0
