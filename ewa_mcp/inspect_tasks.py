@@ -133,7 +133,7 @@ def _bind_episode(tool: Any, episode_id: str) -> Any:
     return ToolDef(execute, name=td.name, description=td.description, parameters=params).as_tool()
 
 
-def _chars_per_token_estimate(text: str) -> int:
+async def _estimate_tokens(text: str) -> int:
     """About four characters a token: an offline estimate (no tokenizer file, no download)."""
     return max(1, -(-len(text) // 4))
 
@@ -149,13 +149,9 @@ def offline_token_counts(model: Any) -> Any:
     except ImportError:  # a future Inspect that moved it: nothing to adjust
         return model
     api = getattr(model, "api", None)
-    if isinstance(api, MockLLM) and getattr(api, "count_text_tokens", None) is not _async_estimate:
-        api.count_text_tokens = _async_estimate
+    if isinstance(api, MockLLM):
+        api.count_text_tokens = _estimate_tokens  # an instance attribute: only this model object changes
     return model
-
-
-async def _async_estimate(text: str) -> int:
-    return _chars_per_token_estimate(text)
 
 
 def _first_message(task_id: str, start: Any, send_images: bool) -> ChatMessageUser:
