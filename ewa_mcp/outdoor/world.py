@@ -676,8 +676,9 @@ def _read(path: Path) -> dict[str, Any]:
 
 
 def _extra_dirs() -> list[Path]:
-    value = os.environ.get(EXTRA_DATA_ENV, "")
-    return [Path(p) for p in value.split(os.pathsep) if p]
+    from ..settings import load_settings  # the street_data setting; re-read: use_street_data extends it
+
+    return list(load_settings().street_data)
 
 
 def use_street_data(dirs: list[Path]) -> None:
