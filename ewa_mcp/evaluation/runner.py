@@ -91,7 +91,7 @@ async def connect(transport: str, task_dirs: list[Path], run_dir: Path):
                 except httpx.TransportError:
                     if proc.poll() is not None or time.monotonic() > deadline:
                         raise EvalError("the HTTP server did not start; run `ewa-mcp serve --transport http` "
-                                        "by hand to see why")
+                                        "by hand to see why") from None
                     await anyio.sleep(0.1)
             async with Client(f"http://127.0.0.1:{port}/mcp") as client:
                 yield client

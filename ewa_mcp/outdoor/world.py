@@ -547,7 +547,7 @@ def node_label(graph: CityGraph, i: int) -> str:
         return " & ".join(graph.node_streets[i])
     street = graph.node_streets[i][0] if graph.node_streets[i] else ""
     ends = []
-    for j, _, s, _ in graph.adj[i]:
+    for j, _, _s, _ in graph.adj[i]:
         prev, cur = i, j
         for _ in range(50):
             if len(graph.node_streets[cur]) >= 2:
