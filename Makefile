@@ -5,15 +5,21 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.ewa-installed
 
-.PHONY: run test install chromium bench clean
+.PHONY: run test lint install chromium bench clean
 
 # The main job on the embedded defaults: the oracle plays a deterministic sample of every domain
 # through the real MCP server, then the run is graded and the paper-shaped table printed.
 run: install chromium
 	$(BIN)/ewa-mcp eval --agent oracle --sample 3 --workers 2
 
-test: install chromium
+test: install chromium lint
 	$(BIN)/pytest
+
+# Bug-finding lint rules, the type checker and the import contracts, all configured in pyproject.toml.
+lint: install
+	$(BIN)/ruff check --quiet .
+	$(BIN)/lint-imports --no-cache
+	$(BIN)/mypy
 
 install: $(STAMP)
 

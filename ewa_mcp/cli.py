@@ -7,6 +7,7 @@ import json
 import logging
 import sys
 from pathlib import Path
+from typing import Any
 
 from . import __version__
 
@@ -104,8 +105,8 @@ def cmd_tasks(args: argparse.Namespace) -> int:
         from .taskgen import generate_all
 
         out = Path(args.output) if args.output else generated_tasks_dir()
-        counts = generate_all(out, domains=args.domain)
-        print(json.dumps(counts))
+        generated = generate_all(out, domains=args.domain)
+        print(json.dumps(generated))
         print(f"wrote {out}" + ("" if args.output or out != Path.cwd() / "tasks" else
                                 "; use it with --tasks ./tasks or EWA_TASKS_DIR=./tasks"), file=sys.stderr)
         return 0
@@ -148,7 +149,7 @@ def cmd_eval(args: argparse.Namespace) -> int:
         if args.agent == "replay":
             if not args.replay:
                 raise EvalError("--agent replay needs a FILE: ewa-mcp eval --agent replay path/to/replay.jsonl")
-            agent = ReplayAgent(load_replay(Path(args.replay)))
+            agent: Any = ReplayAgent(load_replay(Path(args.replay)))
         else:
             agent = {"oracle": OracleAgent, "noop": NoopAgent, "random": RandomAgent}[args.agent]()
         patterns = args.tasks

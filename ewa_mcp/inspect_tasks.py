@@ -267,7 +267,7 @@ def ewa_grader():
 
     async def score(state: TaskState, target: Target) -> Score:
         episode_id, run_dir = state.metadata.get("episode_id"), state.metadata.get("run_dir")
-        if not episode_id:
+        if not episode_id or not run_dir:
             return Score(value={"overall": 0.0, "completion": 0.0}, explanation="the episode never started")
         async with Client(state.metadata["server_url"]) as client:
             if await _status(client, episode_id) == "running":

@@ -24,7 +24,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from datetime import UTC, datetime
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 from PIL import Image
 
@@ -92,7 +92,8 @@ def _encoded(image: Image.Image) -> tuple[bytes, str, tuple[int, int]]:
         image = image.convert("RGBA")
     image.thumbnail((MAX_IMAGE_SIDE, MAX_IMAGE_SIDE), Image.Resampling.LANCZOS)
     buffer = io.BytesIO()
-    if image.mode in ("RGBA", "LA") and image.getchannel("A").getextrema()[0] < 255:
+    # One channel's extrema are (min, max); Pillow types them with the multi-band case.
+    if image.mode in ("RGBA", "LA") and cast(tuple[float, float], image.getchannel("A").getextrema())[0] < 255:
         image.save(buffer, format="PNG", optimize=True)
         return buffer.getvalue(), "image/png", image.size
     image.convert("RGB").save(buffer, format="JPEG", quality=JPEG_QUALITY)
