@@ -119,6 +119,18 @@ def env_name(field: str) -> str:
     return ENV_PREFIX + field.upper()
 
 
+# How a `serve` is reached: a process that starts its own loopback server sets these with flags (or not at all:
+# no token on loopback) and must not inherit the caller's, which may describe another server.
+SERVE_ONLY = ("transport", "host", "port", "allow_remote", "mcp_token", "run_dir")
+
+
+def child_server_env(environ: Mapping[str, str] | None = None) -> dict[str, str]:
+    """The environment for an `ewa-mcp serve` child started on loopback by this process (eval, Inspect):
+    the caller's, less the variables of SERVE_ONLY. The other settings (browser, tasks, ...) are passed on."""
+    dropped = {env_name(f) for f in SERVE_ONLY}
+    return {k: v for k, v in (os.environ if environ is None else environ).items() if k.upper() not in dropped}
+
+
 def _source(field: str, flags: Mapping[str, Any]) -> str:
     if field in flags and field in FLAGS:
         return FLAGS[field]

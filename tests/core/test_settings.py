@@ -11,7 +11,7 @@ import pytest
 from ewa_mcp import cli
 from ewa_mcp.paths import REPO_ROOT, runs_dir, task_dirs
 from ewa_mcp.server import ServerConfig, build_server
-from ewa_mcp.settings import Settings, SettingsError, load_settings
+from ewa_mcp.settings import Settings, SettingsError, child_server_env, load_settings
 
 
 @pytest.fixture(autouse=True)
@@ -148,3 +148,11 @@ def test_no_module_reads_an_ewa_variable_but_the_settings():
         if re.search(r"""(environ(\.get)?\(|getenv\(|environ\[)\s*["']EWA_""", text):
             readers.append(str(path.relative_to(REPO_ROOT)))
     assert readers == [], f"read EWA_* through ewa_mcp.settings.load_settings, not os.environ: {readers}"
+
+
+def test_a_child_server_does_not_inherit_how_the_callers_server_is_reached():
+    environ = {"EWA_TRANSPORT": "http", "EWA_HOST": "0.0.0.0", "EWA_PORT": "80", "EWA_ALLOW_REMOTE": "1",
+               "EWA_MCP_TOKEN": "t" * 20, "EWA_RUN_DIR": "/elsewhere", "EWA_KITCHEN_BACKEND": "ai2thor",
+               "EWA_BROWSER__HEADLESS": "false", "PATH": "/usr/bin"}
+    child = child_server_env(environ)
+    assert child == {"EWA_KITCHEN_BACKEND": "ai2thor", "EWA_BROWSER__HEADLESS": "false", "PATH": "/usr/bin"}
