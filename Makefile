@@ -5,15 +5,23 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.ewa-installed
 
-.PHONY: run test install chromium bench clean
+LOCK := requirements.lock
+
+.PHONY: run test lint install lock chromium bench clean
 
 # The main job on the embedded defaults: the oracle plays a deterministic sample of every domain
 # through the real MCP server, then the run is graded and the paper-shaped table printed.
 run: install chromium
 	$(BIN)/ewa-mcp eval --agent oracle --sample 3 --workers 2
 
-test: install chromium
+test: install chromium lint
 	$(BIN)/pytest
+
+# Bug-finding lint rules, the type checker and the import contracts, all configured in pyproject.toml.
+lint: install
+	$(BIN)/ruff check --quiet .
+	$(BIN)/lint-imports --no-cache
+	$(BIN)/mypy
 
 install: $(STAMP)
 
@@ -21,9 +29,21 @@ $(BIN)/python:
 	$(PYTHON) -c 'import sys; sys.exit(0 if sys.version_info >= (3, 11) else "ewa-mcp needs Python >= 3.11; set PYTHON=python3.11")'
 	$(PYTHON) -m venv $(VENV)
 
-$(STAMP): pyproject.toml | $(BIN)/python
-	$(BIN)/python -m pip install -q --disable-pip-version-check -e ".[test,ai2thor]"
+# pyproject.toml declares compatible ranges; requirements.lock holds the exact versions installed here and in CI.
+$(STAMP): pyproject.toml $(LOCK) | $(BIN)/python
+	$(BIN)/python -m pip install -q --disable-pip-version-check -c $(LOCK) -e ".[test,ai2thor]"
 	touch $(STAMP)
+
+# Re-resolve the newest versions the ranges allow, in a fresh environment, and write them to requirements.lock.
+# Then run `make test` and commit the lock (docs/architecture.md, "Dependencies").
+lock:
+	rm -rf .venv-lock
+	$(PYTHON) -m venv .venv-lock
+	.venv-lock/bin/python -m pip install -q --disable-pip-version-check -e ".[test,ai2thor]"
+	( echo "# Exact versions for \`make install\` and CI: pip install -c requirements.lock -e '.[test,ai2thor]'"; \
+	  echo "# Written by \`make lock\` from the ranges in pyproject.toml; do not edit by hand."; \
+	  .venv-lock/bin/python -m pip freeze --disable-pip-version-check --exclude-editable ) > $(LOCK)
+	rm -rf .venv-lock
 
 chromium:
 	@scripts/ensure-chromium.sh
@@ -33,4 +53,4 @@ bench: install chromium
 	for script in benchmarks/bench_*.py; do echo "== $$script"; $(BIN)/python $$script || exit 1; done
 
 clean:
-	rm -rf $(VENV) runs .pytest_cache
+	rm -rf $(VENV) .venv-lock runs .pytest_cache .mypy_cache .ruff_cache .import_linter_cache

@@ -47,8 +47,9 @@ from ewa_mcp.websites import serve
 cfg = json.loads(sys.argv[1])
 serve.SITES = {"home": serve.SITES["home"], "fixture": "ewa_mcp.web.testsite:create_app"}
 from ewa_mcp.server import ServerConfig, build_server
+from ewa_mcp.settings import load_settings
 mcp, _ = build_server(ServerConfig(task_dirs=[Path(cfg["tasks"])], run_dir=Path(cfg["runs"]),
-                                   services={"site_ports": cfg["ports"], "browser": cfg["browser"]}))
+                                   settings=load_settings({"site_ports": cfg["ports"], "browser": cfg["browser"]})))
 mcp.run("stdio")
 """
 

@@ -27,6 +27,7 @@ from types import SimpleNamespace
 from typing import Any
 
 from ewa_mcp.services import Services
+from ewa_mcp.settings import load_settings
 from ewa_mcp.taskmodel import Task
 from ewa_mcp.web import chromium
 from ewa_mcp.web.env import BrowserEnvironment
@@ -60,7 +61,7 @@ def builds() -> dict[str, str]:
 
 async def services_for(path: str, sites: Any, *, pool: bool, gc_every: int = 10,
                        max_uses: int = 50) -> Services:
-    services = Services({"browser": {"executable_path": path}})
+    services = Services(load_settings({"browser": {"executable_path": path}}))
     # The environment reads only the sites' URLs; a plain view keeps aclose() from stopping them.
     await services.get("websites", lambda _: SimpleNamespace(urls=sites.urls))
     service = await services.get("chromium", chromium.chromium_service)
@@ -111,7 +112,7 @@ async def main() -> None:
     parser.add_argument("--episodes", type=int, default=30)
     parser.add_argument("--long", type=int, default=160)
     args = parser.parse_args()
-    sites = await Services({}).get("websites", site_service)
+    sites = await Services().get("websites", site_service)
     found = builds()
     report: dict[str, Any] = {"benchmark": "browser share of a cooking episode", "builds": found, "latency": {}}
     for name, path in found.items():

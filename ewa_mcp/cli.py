@@ -7,17 +7,9 @@ import json
 import logging
 import sys
 from pathlib import Path
+from typing import Any
 
 from . import __version__
-
-
-def _server_config(args: argparse.Namespace):
-    from .server import ServerConfig
-
-    return ServerConfig(
-        task_dirs=[Path(p) for p in args.tasks] if getattr(args, "tasks", None) else None,
-        run_dir=Path(args.run_dir) if getattr(args, "run_dir", None) else None,
-    )
 
 
 def _task_dirs_or_error(given: list[str] | None) -> list[Path] | None:
@@ -33,24 +25,41 @@ def _task_dirs_or_error(given: list[str] | None) -> list[Path] | None:
     return dirs
 
 
+def serve_flags(args: argparse.Namespace) -> dict[str, object]:
+    """The settings given as `serve` flags (only those given: the others keep their EWA_* variable or default)."""
+    return {"transport": args.transport, "host": args.host, "port": args.port, "allow_remote": args.allow_remote,
+            "mcp_token": args.token, "tasks_dir": args.tasks, "run_dir": args.run_dir, "verbose": args.verbose}
+
+
 def cmd_serve(args: argparse.Namespace) -> int:
-    # stdout carries the stdio protocol: every log line goes to stderr.
-    logging.basicConfig(level=logging.WARNING if not args.verbose else logging.INFO, stream=sys.stderr)
-    task_dirs = _task_dirs_or_error(getattr(args, "tasks", None))
-    if task_dirs is None:
+    from .paths import TaskStoreMissing, check_task_dirs, task_dirs
+    from .settings import SettingsError, load_settings
+
+    try:
+        settings = load_settings(serve_flags(args))  # defaults < EWA_* variables < these flags
+    except SettingsError as exc:
+        print(f"ewa-mcp serve: error: {exc}", file=sys.stderr)
         return 2
-    from .server import build_server
+    # stdout carries the stdio protocol: every log line goes to stderr.
+    logging.basicConfig(level=logging.INFO if settings.verbose else logging.WARNING, stream=sys.stderr)
+    dirs = task_dirs(settings)
+    try:
+        check_task_dirs(dirs)
+    except TaskStoreMissing as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    from .server import ServerConfig, build_server
 
     # The task files are parsed on first use, not here: a client's `initialize` is answered at once.
-    mcp, episodes = build_server(_server_config(args))
-    print(f"ewa-mcp {__version__}: tasks from {', '.join(map(str, task_dirs))}; "
+    mcp, episodes = build_server(ServerConfig(settings=settings))
+    print(f"ewa-mcp {__version__}: tasks from {', '.join(map(str, dirs))}; "
           f"episodes recorded under {episodes.run_dir}", file=sys.stderr)
-    if args.transport == "stdio":
+    if settings.transport == "stdio":
         mcp.run("stdio")
     else:
         from .http_serve import serve_http
 
-        return serve_http(mcp, args.host, args.port, allow_remote=args.allow_remote, token=args.token)
+        return serve_http(mcp, settings)
     return 0
 
 
@@ -96,8 +105,8 @@ def cmd_tasks(args: argparse.Namespace) -> int:
         from .taskgen import generate_all
 
         out = Path(args.output) if args.output else generated_tasks_dir()
-        counts = generate_all(out, domains=args.domain)
-        print(json.dumps(counts))
+        generated = generate_all(out, domains=args.domain)
+        print(json.dumps(generated))
         print(f"wrote {out}" + ("" if args.output or out != Path.cwd() / "tasks" else
                                 "; use it with --tasks ./tasks or EWA_TASKS_DIR=./tasks"), file=sys.stderr)
         return 0
@@ -140,7 +149,7 @@ def cmd_eval(args: argparse.Namespace) -> int:
         if args.agent == "replay":
             if not args.replay:
                 raise EvalError("--agent replay needs a FILE: ewa-mcp eval --agent replay path/to/replay.jsonl")
-            agent = ReplayAgent(load_replay(Path(args.replay)))
+            agent: Any = ReplayAgent(load_replay(Path(args.replay)))
         else:
             agent = {"oracle": OracleAgent, "noop": NoopAgent, "random": RandomAgent}[args.agent]()
         patterns = args.tasks
@@ -192,17 +201,22 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"ewa-mcp {__version__}")
     sub = parser.add_subparsers(dest="command", required=True)
 
-    p = sub.add_parser("serve", help="run the MCP server (stdio or streamable HTTP)")
-    p.add_argument("--transport", choices=["stdio", "http"], default="stdio")
-    p.add_argument("--host", default="127.0.0.1")
-    p.add_argument("--port", type=int, default=8765)
-    p.add_argument("--allow-remote", action="store_true",
+    # serve's flags are settings (ewa_mcp/settings.py): each left out keeps its EWA_* variable, else its default.
+    # Their values are checked by the settings, which name the flag and the fix.
+    p = sub.add_parser("serve", help="run the MCP server (stdio or streamable HTTP)",
+                       epilog="Each flag overrides its EWA_* variable (EWA_TRANSPORT, EWA_HOST, EWA_PORT, ...); "
+                       "docs/architecture.md, 'Settings', lists them all.")
+    p.add_argument("--transport", help="stdio or http (default: stdio)")
+    p.add_argument("--host", help="address to listen on (default: 127.0.0.1)")
+    p.add_argument("--port", help="port to listen on (default: 8765)")
+    p.add_argument("--allow-remote", action="store_const", const=True, default=None,
                    help="allow a non-loopback --host; every request then needs a bearer token")
     p.add_argument("--token", help="bearer token every HTTP request must carry (default: EWA_MCP_TOKEN; past "
                    "loopback one is generated and printed when neither is set)")
-    p.add_argument("--tasks", action="append", metavar="DIR", help="task directory (repeatable; default: tasks/)")
+    p.add_argument("--tasks", action="append", metavar="DIR", help="task directory (repeatable; default: "
+                   "EWA_TASKS_DIR, else the bundled suites)")
     p.add_argument("--run-dir", metavar="DIR", help="where episodes are recorded (default: runs/<new id>)")
-    p.add_argument("-v", "--verbose", action="store_true")
+    p.add_argument("-v", "--verbose", action="store_const", const=True, default=None)
     p.set_defaults(func=cmd_serve)
 
     p = sub.add_parser("sites", help="serve the five embedded web sites for people to browse")
@@ -252,8 +266,13 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
+    from .settings import SettingsError
+
     try:
         return int(args.func(args) or 0)
+    except SettingsError as exc:  # an EWA_* variable with a bad value: the message names it and the fix
+        print(f"ewa-mcp {args.command}: error: {exc}", file=sys.stderr)
+        return 2
     except KeyboardInterrupt:
         return 130
 

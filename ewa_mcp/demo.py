@@ -29,6 +29,7 @@ async def _demo(run_dir: Path, task_id: str) -> int:
         episode_id = r.structured_content["episode_id"]
         print(f"> start_episode {task_id}\n{_first_text(r)}\n")
         task = episodes.tasks.get(task_id)
+        assert task is not None  # listed by list_tasks above
         for call in task.oracle:
             args = {"episode_id": episode_id, **call.args}
             r = await client.call_tool(call.tool, args)

@@ -15,10 +15,11 @@ from __future__ import annotations
 import hmac
 import ipaddress
 import json
-import os
 import secrets
 import sys
 from typing import Any
+
+from .settings import Settings
 
 TOKEN_ENV = "EWA_MCP_TOKEN"
 MIN_TOKEN_CHARS = 16
@@ -50,10 +51,8 @@ def check_token(token: str) -> str:
 
 
 def choose_token(host: str, given: str | None) -> tuple[str | None, bool]:
-    """(the token requests must carry or None, whether it was generated here). ``given`` is
-    ``--token`` or, when that is absent, ``EWA_MCP_TOKEN``."""
-    if given is None:
-        given = os.environ.get(TOKEN_ENV) or None
+    """(the token requests must carry or None, whether it was generated here). ``given`` is the
+    mcp_token setting: ``--token`` or, when that is absent, ``EWA_MCP_TOKEN``."""
     if given is not None:
         return check_token(given), False
     if is_loopback_host(host):
@@ -101,10 +100,12 @@ class BearerTokenGuard:
         await send({"type": "http.response.body", "body": body})
 
 
-def serve_http(mcp: Any, host: str, port: int, *, allow_remote: bool, token: str | None) -> int:
-    """Run the streamable HTTP app until interrupted; 2 for a refused configuration."""
+def serve_http(mcp: Any, settings: Settings) -> int:
+    """Run the streamable HTTP app on ``settings.host``/``port`` until interrupted; 2 for a refused configuration."""
     import anyio
     import uvicorn
+
+    host, port, allow_remote, token = settings.host, settings.port, settings.allow_remote, settings.token()
 
     if not is_loopback_host(host) and not allow_remote:
         print(f"refusing to listen on {host}: the server drives a browser and records runs; "

@@ -40,6 +40,7 @@ from .evaluation.runner import EvalError, _free_port, select_tasks
 from .paths import TaskStoreMissing, check_task_dirs, runs_dir  # noqa: F401 (re-exported)
 from .paths import tasks_dir as default_tasks_dir
 from .records import new_run_id
+from .settings import child_server_env
 from .taskmodel import TaskStore
 
 DOMAINS = ("cooking", "navigation", "shopping", "traveling", "geolocation")
@@ -85,7 +86,7 @@ class _Server:
                 "--run-dir", str(run_dir)]
         for d in task_dirs:
             args += ["--tasks", str(d)]
-        self.proc = subprocess.Popen(args, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL)
+        self.proc = subprocess.Popen(args, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, env=child_server_env())
         atexit.register(self.stop)
 
     def wait_ready(self, timeout: float = 120) -> None:
@@ -288,7 +289,7 @@ def ewa_grader():
 
     async def score(state: TaskState, target: Target) -> Score:
         episode_id, run_dir = state.metadata.get("episode_id"), state.metadata.get("run_dir")
-        if not episode_id:
+        if not episode_id or not run_dir:
             return Score(value={"overall": 0.0, "completion": 0.0}, explanation="the episode never started")
         async with Client(state.metadata["server_url"]) as client:
             if await _status(client, episode_id) == "running":

@@ -1,4 +1,4 @@
-"""Where the project's data lives, overridable by environment variables.
+"""Where the project's data lives, overridable by settings (``EWA_TASKS_DIR``, ``EWA_RUNS_DIR``: ewa_mcp/settings.py).
 
 Read-only data ships inside the package: the task suites are installed as ``ewa_mcp/tasks`` (from the
 repository's ``tasks/``), so an installed ``ewa-mcp`` sees every task from any directory. In a checkout
@@ -8,8 +8,9 @@ package: runs go under the working directory (``EWA_RUNS_DIR``), generated tasks
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
+
+from .settings import Settings, load_settings
 
 PACKAGE_DIR = Path(__file__).resolve().parent
 # The checkout's root when running from one; in an installed wheel this is site-packages (never written).
@@ -28,27 +29,37 @@ def in_checkout() -> bool:
     return pyproject.is_file() and 'name = "ewa-mcp"' in pyproject.read_text(encoding="utf-8", errors="replace")
 
 
-def tasks_dir() -> Path:
-    """The task suites to serve: EWA_TASKS_DIR, else the installed package's, else the checkout's tasks/."""
-    if os.environ.get("EWA_TASKS_DIR"):
-        return Path(os.environ["EWA_TASKS_DIR"])
+def task_dirs(settings: Settings | None = None) -> list[Path]:
+    """The task suites to serve: the tasks_dir setting (--tasks, EWA_TASKS_DIR), else the installed
+    package's, else the checkout's tasks/."""
+    settings = settings or load_settings()
+    if settings.tasks_dir:
+        return list(settings.tasks_dir)
     if INSTALLED_TASKS.is_dir():
-        return INSTALLED_TASKS
-    return REPO_ROOT / "tasks"
+        return [INSTALLED_TASKS]
+    return [REPO_ROOT / "tasks"]
 
 
-def generated_tasks_dir() -> Path:
+def tasks_dir(settings: Settings | None = None) -> Path:
+    """The first directory of ``task_dirs`` (callers that serve one suite)."""
+    return task_dirs(settings)[0]
+
+
+def generated_tasks_dir(settings: Settings | None = None) -> Path:
     """Where ``ewa-mcp tasks generate`` writes without ``-o``: the checkout's tasks/, else ./tasks.
 
     An installed package is read-only: regenerating into site-packages would be lost on upgrade and
     may not even be writable."""
-    if os.environ.get("EWA_TASKS_DIR"):
-        return Path(os.environ["EWA_TASKS_DIR"])
+    settings = settings or load_settings()
+    if settings.tasks_dir:
+        return settings.tasks_dir[0]
     return REPO_ROOT / "tasks" if in_checkout() else Path.cwd() / "tasks"
 
 
-def runs_dir() -> Path:
-    return Path(os.environ.get("EWA_RUNS_DIR", Path.cwd() / "runs"))
+def runs_dir(settings: Settings | None = None) -> Path:
+    """Where new runs are recorded: the runs_dir setting (EWA_RUNS_DIR), else ./runs."""
+    settings = settings or load_settings()
+    return settings.runs_dir or Path.cwd() / "runs"
 
 
 def check_task_dirs(dirs: list[Path]) -> None:

@@ -16,10 +16,11 @@ from pydantic import ValidationError
 
 from . import __version__, registry
 from .episodes import EpisodeManager
-from .paths import runs_dir, tasks_dir
+from .paths import runs_dir, task_dirs
 from .records import new_run_id
 from .schemas import make_portable
 from .services import Services
+from .settings import Settings, load_settings
 from .taskmodel import TaskStore
 
 log = logging.getLogger("ewa_mcp")
@@ -57,31 +58,44 @@ class EpisodeServer(MCPServer):
 
 @dataclass
 class ServerConfig:
-    task_dirs: list[Path] | None = None
-    run_dir: Path | None = None  # the directory episodes are written under (one run)
-    services: dict[str, Any] | None = None  # config passed to shared services (ports, browser options)
+    settings: Settings | None = None  # default: load_settings() (the defaults and the EWA_* variables)
+    task_dirs: list[Path] | None = None  # overrides settings.tasks_dir
+    run_dir: Path | None = None  # overrides settings.run_dir: the directory episodes are written under (one run)
     environments: dict[str, Any] | None = None  # name -> class overrides (tests)
+
+    def resolved_settings(self) -> Settings:
+        overrides: dict[str, Any] = {"tasks_dir": self.task_dirs, "run_dir": self.run_dir}
+        overrides = {k: v for k, v in overrides.items() if v is not None}
+        if self.settings is None:
+            return load_settings(overrides)
+        return self.settings.model_copy(update=overrides)
 
 
 def build_server(config: ServerConfig | None = None) -> tuple[MCPServer, EpisodeManager]:
+    """The server, its episode manager and the shared services, all configured by one ``Settings``.
+
+    Raises ``SettingsError`` (naming the variable and the fix) when an EWA_* variable is invalid."""
     config = config or ServerConfig()
-    tasks = TaskStore(config.task_dirs or [tasks_dir()])
+    settings = config.resolved_settings()
+    tasks = TaskStore(task_dirs(settings))
     # Imported task directories carry their street graphs in a streets/ folder (ewa-mcp tasks import-ewa).
     streets = [Path(d) / "streets" for d in tasks.roots if (Path(d) / "streets").is_dir()]
     if streets:
         from .outdoor.world import use_street_data
 
         use_street_data(streets)
-    run_dir = config.run_dir or (runs_dir() / new_run_id())
-    services = Services(config.services)
+    run_dir = settings.run_dir or (runs_dir(settings) / new_run_id())
+    services = Services(settings)
     episodes = EpisodeManager(tasks, run_dir, services, config.environments)
     # The embedded sites report per-episode events (orders, page views) through this sink.
-    services.config.setdefault("emit_event", episodes.emit_event)
+    services.emit_event = episodes.emit_event
 
     @asynccontextmanager
-    async def lifespan(_: MCPServer) -> AsyncIterator[dict[str, Any]]:
+    async def lifespan(_: MCPServer) -> AsyncIterator[None]:
+        # Only shutdown matters here: the tools reach the episode manager through register(), so the
+        # lifespan context carries nothing. Stopping the server ends open episodes and the browser.
         try:
-            yield {"episodes": episodes}
+            yield
         finally:
             await episodes.aclose()
             await services.aclose()

@@ -1,7 +1,9 @@
 """Process-wide resources shared by all episodes (a browser, the embedded web sites, city graphs).
 
 Each is created on first use by a named factory and closed when the server stops, so a
-server that never runs a web task never starts Chromium.
+server that never runs a web task never starts Chromium. ``Services`` also carries what those
+factories and the environments need to know: the process's ``Settings`` (browser options, site
+ports, kitchen backend, ...) and the episode manager's event sink.
 """
 
 from __future__ import annotations
@@ -12,10 +14,17 @@ from typing import Any
 
 import anyio
 
+from .settings import Settings, load_settings
+
+# (episode_id, event) -> None: how the embedded web sites report orders and page views to the episodes.
+EventSink = Callable[[str, dict[str, Any]], None]
+
 
 class Services:
-    def __init__(self, config: dict[str, Any] | None = None):
-        self.config: dict[str, Any] = dict(config or {})
+    def __init__(self, settings: Settings | None = None, *, emit_event: EventSink | None = None):
+        # Built once by the CLI or build_server and handed down; environments read it, never os.environ.
+        self.settings: Settings = settings if settings is not None else load_settings()
+        self.emit_event: EventSink | None = emit_event
         self._items: dict[str, Any] = {}
         self._closers: list[Callable[[], Any]] = []
         self._lock = anyio.Lock()

@@ -122,7 +122,7 @@ def domain_aggregate(domain: str, episodes: list[EpisodeResult]) -> DomainAggreg
 def error_breakdown(episodes: list[EpisodeResult]) -> ErrorBreakdown:
     failed = [e for e in episodes if e.error is not None]
     by_category = Counter(e.error.category for e in failed if e.error)
-    by_group = Counter(e.error.group for e in failed if e.error)
+    by_group: Counter[str] = Counter(e.error.group for e in failed if e.error)
     total = len(failed)
 
     def pct(count: int) -> float:

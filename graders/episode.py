@@ -102,7 +102,7 @@ def _orders_for_pickup(task: TaskView, events: list[dict[str, Any]]) -> list[dic
 
 
 def _setting(task: TaskView, final: dict[str, Any]) -> str | None:
-    options = final.get("options") if isinstance(final.get("options"), dict) else {}
+    options = given if isinstance(given := final.get("options"), dict) else {}
     setting = options.get("geolocation_setting") or task.start_setting or task.metadata.get("setting")
     return setting if isinstance(setting, str) else None
 

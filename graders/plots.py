@@ -13,7 +13,7 @@ class PlotError(RuntimeError):
     """Plots were asked for but cannot be drawn; the message says how to fix it."""
 
 
-def _pyplot():  # type: ignore[no-untyped-def]
+def _pyplot():
     try:
         import matplotlib
     except ImportError as exc:

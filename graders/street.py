@@ -130,7 +130,7 @@ def check_reached_place(
         exact_node=end_node == goal.node and same_city,
         success=success,
         shortest_path_m=round(shortest, 2) if shortest is not None else None,
-        shortest_path_source=source,  # type: ignore[arg-type]
+        shortest_path_source=source,
         path_length_m=walked,
         spl=round(spl, 4) if spl is not None else None,
     )

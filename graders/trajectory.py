@@ -48,7 +48,7 @@ def visits(trajectory: list[dict[str, Any]]) -> list[Visit]:
     current: Visit | None = None
     for record in trajectory:
         if record.get("tool") == "switch_environment" and record.get("ok") is True:
-            args = record.get("args") if isinstance(record.get("args"), dict) else {}
+            args = given if isinstance(given := record.get("args"), dict) else {}
             current = Visit(env=args.get("target") or record.get("environment"), via_switch=True)
             result.append(current)
             continue

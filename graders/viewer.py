@@ -9,7 +9,8 @@ error category, per-goal results and each step (tool, arguments, result, environ
 observation and the step's images). It needs nothing but itself: images are data: URIs, CSS is
 inline, there is no script at all (collapsing uses <details>), and a Content-Security-Policy
 forbids every fetch. Everything read from the run is HTML-escaped, because runs hold text an agent
-or a web page chose.
+or a web page chose. The page is the Jinja2 template templates/viewer.html (autoescaped); this
+module reads the run, embeds the images and hands the template plain values.
 """
 
 from __future__ import annotations
@@ -20,16 +21,18 @@ import io
 import json
 import os
 import re
-from collections.abc import Iterable
 from dataclasses import dataclass, field
 from datetime import UTC, datetime
+from functools import lru_cache
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
+import jinja2
+from markupsafe import Markup
 from PIL import Image
 
 from .errors import CATEGORIES, GROUP_LABELS
-from .models import ConditionResult, EpisodeResult, RunReport
+from .models import EpisodeResult, RunReport
 from .render import Table, demo_table, error_tables, geolocation_section, main_table, navigation_table
 from .rundir import episode_dirs, read_jsonl
 
@@ -40,8 +43,6 @@ JPEG_QUALITY = 80
 MAX_IMAGE_FILE_BYTES = 40_000_000  # no observation is this big; such a file is not an observation
 TEXT_LIMIT = 4_000  # characters of one argument block or observation shown
 EMBEDDABLE = {"PNG": "image/png", "JPEG": "image/jpeg", "GIF": "image/gif", "WEBP": "image/webp"}
-PROTOCOL_TOOLS = {"start_episode", "get_observation", "switch_environment", "finish_episode", "episode_status",
-                  "list_tasks", "submit_location"}
 
 # No script, no fetch: only inline styles and data: images may load.
 CSP = "default-src 'none'; img-src data:; style-src 'unsafe-inline'; base-uri 'none'; form-action 'none'"
@@ -92,7 +93,8 @@ def _encoded(image: Image.Image) -> tuple[bytes, str, tuple[int, int]]:
         image = image.convert("RGBA")
     image.thumbnail((MAX_IMAGE_SIDE, MAX_IMAGE_SIDE), Image.Resampling.LANCZOS)
     buffer = io.BytesIO()
-    if image.mode in ("RGBA", "LA") and image.getchannel("A").getextrema()[0] < 255:
+    # One channel's extrema are (min, max); Pillow types them with the multi-band case.
+    if image.mode in ("RGBA", "LA") and cast(tuple[float, float], image.getchannel("A").getextrema())[0] < 255:
         image.save(buffer, format="PNG", optimize=True)
         return buffer.getvalue(), "image/png", image.size
     image.convert("RGB").save(buffer, format="JPEG", quality=JPEG_QUALITY)
@@ -139,11 +141,7 @@ def embed_image(episode_dir: Path, relative: Any, budget: ImageBudget) -> Embedd
     return EmbeddedImage(f"data:{mime};base64,{base64.b64encode(data).decode('ascii')}", f"{relative} ({shown})")
 
 
-# ------------------------------------------------------------------ small HTML helpers
-def esc(value: Any) -> str:
-    return html.escape(value if isinstance(value, str) else str(value), quote=True)
-
-
+# ------------------------------------------------------------------ values for the template
 def clip(text: str, limit: int = TEXT_LIMIT) -> str:
     return text if len(text) <= limit else text[:limit] + f"… [{len(text) - limit} more characters]"
 
@@ -155,29 +153,6 @@ def as_json(value: Any) -> str:
         return repr(value)
 
 
-def verdict(value: bool | None, *, unknown: str = "not gradable") -> str:
-    if value is True:
-        return '<span class="badge pass">pass</span>'
-    if value is False:
-        return '<span class="badge fail">fail</span>'
-    return f'<span class="badge unknown">{esc(unknown)}</span>'
-
-
-def table_html(table: Table, caption_level: str = "h3") -> str:
-    head = "".join(f'<th scope="col">{esc(h)}</th>' for h in table.headers)
-    rows = "".join("<tr>" + "".join(f"<td>{esc(c)}</td>" for c in row) + "</tr>" for row in table.rows)
-    note = f'<p class="note">{esc(table.note)}</p>' if table.note else ""
-    return f"<{caption_level}>{esc(table.title)}</{caption_level}><table><thead><tr>{head}</tr></thead>" \
-           f"<tbody>{rows}</tbody></table>{note}"
-
-
-def definition_list(items: Iterable[tuple[str, str]]) -> str:
-    """Label/value rows; values are already HTML."""
-    return "<table><tbody>" + "".join(f'<tr><th scope="row">{esc(k)}</th><td>{v}</td></tr>' for k, v in items) \
-        + "</tbody></table>"
-
-
-# ------------------------------------------------------------------ steps
 @dataclass
 class StepView:
     """One trajectory line, read leniently: a damaged line still shows what it has."""
@@ -223,54 +198,41 @@ def step_views(trajectory: list[dict[str, Any]]) -> list[StepView]:
     return views
 
 
-def _switch_mark(step: StepView, previous_env: str | None) -> str:
-    """A banner before each successful switch, and before any other change of environment between steps."""
-    if step.tool == "switch_environment" and step.ok is not False:
-        target = step.args.get("target") if isinstance(step.args, dict) else None
-        message = step.args.get("message") if isinstance(step.args, dict) else None
-        said = f" — “{esc(clip(str(message), 300))}”" if message else ""
-        return (f'<div class="switch-mark" role="note">⇄ Switch {esc(previous_env or "?")} → '
-                f'{esc(target or step.environment or "?")}{said}</div>')
-    if previous_env is not None and step.environment is not None and step.environment != previous_env:
-        return (f'<div class="switch-mark" role="note">⇄ Environment changed {esc(previous_env)} → '
-                f'{esc(step.environment)}</div>')
-    return ""
+@dataclass
+class StepItem:
+    """A step as the page shows it: the line, the banner before it, its metadata and its images."""
+
+    view: StepView
+    anchor: str
+    meta: list[str]
+    images: list[EmbeddedImage]
+    switch_from: str | None = None  # a successful switch_environment: the banner "Switch A → B"
+    switch_to: str | None = None
+    switch_message: str | None = None
+    changed_from: str | None = None  # another change of environment between steps
 
 
-def step_html(step: StepView, episode_dir: Path, anchor: str, budget: ImageBudget) -> str:
-    env = step.environment if step.environment in ("web", "embodied") else None
-    status = {True: '<span class="badge pass">ok</span>', False: '<span class="badge fail">error</span>',
-              None: '<span class="badge unknown">outcome not recorded</span>'}[step.ok]
-    badges = f'<span class="badge env-{env or "none"}">{esc(step.environment or "no environment")}</span>{status}'
-    meta: list[str] = []
+def step_item(step: StepView, previous_env: str | None, episode_dir: Path, anchor: str,
+              budget: ImageBudget) -> StepItem:
+    meta = []
     if step.duration_ms is not None:
         meta.append(f"{step.duration_ms:.1f} ms")
     if step.offset_s is not None:
         meta.append(f"at +{step.offset_s:.1f} s")
     if step.counted is False:
-        meta.append('<span class="muted">not counted</span>')
-    parts = [f'<article class="step {env or "none"}{" failed" if step.ok is False else ""}" '
-             f'aria-labelledby="{anchor}">',
-             f'<h4 id="{anchor}">Step {esc(step.number)}: {esc(step.tool)}</h4> {badges} ' + " · ".join(meta)]
-    if step.args not in ({}, None):
-        parts.append(f'<pre class="args" aria-label="arguments">{esc(clip(as_json(step.args)))}</pre>')
-    if step.error:
-        parts.append(f'<p class="error-text">Error: {esc(clip(step.error))}</p>')
-    if step.observation and step.observation != step.error:
-        parts.append(f'<pre class="observation" aria-label="observation">{esc(clip(step.observation))}</pre>')
-    for k, relative in enumerate(step.images):
-        shown = embed_image(episode_dir, relative, budget)
-        alt = f"Step {step.number} image {k + 1} ({step.environment or 'no environment'})"
-        if shown.data_uri is None:
-            parts.append(f'<p class="note">Image {k + 1}: {esc(shown.caption)}</p>')
-        else:
-            parts.append(f'<figure><img src="{shown.data_uri}" alt="{esc(alt)}" loading="lazy">'
-                         f"<figcaption>{esc(shown.caption)}</figcaption></figure>")
-    parts.append("</article>")
-    return "".join(parts)
+        meta.append("not counted")
+    item = StepItem(step, anchor, meta, [embed_image(episode_dir, relative, budget) for relative in step.images])
+    # A banner before each successful switch, and before any other change of environment between steps.
+    if step.tool == "switch_environment" and step.ok is not False:
+        args = step.args if isinstance(step.args, dict) else {}
+        item.switch_from = previous_env or ""
+        item.switch_to = str(args.get("target") or step.environment or "")
+        item.switch_message = str(args["message"]) if args.get("message") else None
+    elif previous_env is not None and step.environment is not None and step.environment != previous_env:
+        item.changed_from = previous_env
+    return item
 
 
-# ------------------------------------------------------------------ episodes
 def _task_fields(episode_dir: Path) -> dict[str, Any]:
     """intent and step limit straight from task.json (the grade does not carry them); {} when unreadable."""
     try:
@@ -280,124 +242,58 @@ def _task_fields(episode_dir: Path) -> dict[str, Any]:
     return raw if isinstance(raw, dict) else {}
 
 
-def outcome_label(result: EpisodeResult) -> str:
-    if result.overall_success is True:
-        return "success"
-    if result.overall_success is False:
-        return "failed"
-    return "not gradable"
+@dataclass
+class ErrorView:
+    category: str
+    group: str
+    also: list[str]
+    evidence: list[tuple[str, str]]
 
 
-def _condition_row(condition: ConditionResult) -> str:
-    detail = as_json(condition.detail) if condition.detail else ""
-    return (f"<tr><td>{esc(condition.side)}</td><td>{esc(condition.kind)}</td><td>{esc(condition.description)}</td>"
-            f"<td>{verdict(condition.met, unknown='unknown')}</td><td>{esc(condition.note or '')}"
-            f"{f'<pre>{esc(clip(detail, 1500))}</pre>' if detail else ''}</td></tr>")
+@dataclass
+class EpisodeView:
+    result: EpisodeResult
+    anchor: str
+    intent: str | None
+    error: ErrorView | None
+    steps: list[StepItem]
+    directory_missing: bool
 
 
-def _outcome_html(result: EpisodeResult) -> str:
-    completion = f"{100 * result.completion:.1f} % ({result.conditions_met}/{result.conditions_total} conditions)" \
-        if result.completion is not None else "unknown"
-    rows = [
-        ("Overall", verdict(result.overall_success)),
-        ("Web", verdict(result.web_success) + ("" if result.has_web_goals else ' <span class="muted">no web goals'
-                                                                               "</span>")),
-        ("Embodied", verdict(result.embodied_success) + ("" if result.has_embodied_goals else
-                                                         ' <span class="muted">no embodied goals</span>')),
-        ("Answer", verdict(result.answer_correct, unknown="not checked" if not result.answer_checked
-                           else "not gradable")
-         + (f" <q>{esc(clip(result.answer, 1000))}</q>" if result.answer is not None else "")),
-        ("Completion", esc(completion)),
-        ("Status", esc(result.status) + (f" — {esc(result.end_reason)}" if result.end_reason else "")),
-        ("Steps / calls / switches", f"{result.steps} / {result.calls} / {result.switches}"),
-        ("Wall time", f"{result.wall_time_s:.1f} s" if result.wall_time_s is not None else "unknown"),
-    ]
-    if result.error is not None:
-        category = CATEGORIES.get(result.error.category, ("other", result.error.category))[1]
-        group = GROUP_LABELS.get(result.error.group, result.error.group)
-        also = [CATEGORIES.get(m, ("", m))[1] for m in result.error.matched if m != result.error.category]
-        evidence = "".join(f"<li>{esc(k)}: {esc(clip(v, 600))}</li>" for k, v in result.error.evidence.items())
-        rows.append(("Error category", f'<strong class="error-category">{esc(category)}</strong> ({esc(group)})'
-                     + (f"; also matched: {esc(', '.join(also))}" if also else "")
-                     + (f"<ul>{evidence}</ul>" if evidence else "")))
-    return "<h3>Outcome</h3>" + definition_list(rows)
+def _error_view(result: EpisodeResult) -> ErrorView | None:
+    if result.error is None:
+        return None
+    return ErrorView(
+        category=CATEGORIES.get(result.error.category, ("other", result.error.category))[1],
+        group=GROUP_LABELS.get(result.error.group, result.error.group),
+        also=[CATEGORIES.get(m, ("", m))[1] for m in result.error.matched if m != result.error.category],
+        evidence=[(k, str(v)) for k, v in result.error.evidence.items()],
+    )
 
 
-def _goals_html(result: EpisodeResult) -> str:
-    if not result.conditions:
-        return "<h3>Goals</h3><p class=\"muted\">No goal could be read for this episode.</p>"
-    out = ['<h3>Goals</h3><table><thead><tr><th scope="col">Side</th><th scope="col">Kind</th>'
-           '<th scope="col">Goal</th><th scope="col">Met</th><th scope="col">Note</th></tr></thead><tbody>',
-           *(_condition_row(c) for c in result.conditions), "</tbody></table>"]
-    if result.navigation:
-        out.append('<table><caption>Street navigation</caption><thead><tr><th scope="col">Goal node</th>'
-                   '<th scope="col">Final node</th><th scope="col">Stopped</th><th scope="col">Distance (m)</th>'
-                   '<th scope="col">Radius (m)</th><th scope="col">SPL</th></tr></thead><tbody>')
-        for nav in result.navigation:
-            distance = f"{nav.distance_to_goal_m:.1f}" if nav.distance_to_goal_m is not None else "?"
-            spl = f"{nav.spl:.3f}" if nav.spl is not None else "?"
-            out.append(f"<tr><td>{esc(nav.goal_node)}</td><td>{esc(nav.final_node or '?')}</td>"
-                       f"<td>{'yes' if nav.stopped else 'no'}</td><td>{distance}</td><td>{nav.radius_m:g}</td>"
-                       f"<td>{spl}</td></tr>")
-        out.append("</tbody></table>")
-    if result.geolocation:
-        out.append(f"<h4>Geolocation</h4><pre>{esc(clip(as_json(result.geolocation)))}</pre>")
-    return "".join(out)
-
-
-def episode_html(result: EpisodeResult, episode_dir: Path | None, index: int, budget: ImageBudget) -> str:
+def episode_view(result: EpisodeResult, episode_dir: Path | None, index: int, budget: ImageBudget) -> EpisodeView:
     anchor = f"episode-{index}"
     task = _task_fields(episode_dir) if episode_dir is not None else {}
     intent = task.get("intent") if isinstance(task.get("intent"), str) else None
-    title = f"Episode {result.episode_id}: {result.task_id or 'unknown task'}"
-    parts = [f'<section aria-labelledby="{anchor}-h"><details class="episode" id="{anchor}" open>',
-             f'<summary><h2 id="{anchor}-h">{esc(title)}</h2> {verdict(result.overall_success)}</summary>',
-             definition_list([("Domain", esc(result.domain) + (f" ({esc(result.setting)})" if result.setting else "")),
-                              ("Intent", esc(clip(intent)) if intent else '<span class="muted">unknown</span>')]),
-             _outcome_html(result), _goals_html(result)]
-    if result.problems:
-        parts.append("<h3>Problems</h3><ul>" + "".join(f"<li>{esc(p)}</li>" for p in result.problems) + "</ul>")
     problems: list[str] = []
     trajectory = read_jsonl(episode_dir / "trajectory.jsonl", problems) if episode_dir is not None else []
-    steps = step_views(trajectory)
-    parts.append(f'<h3 id="{anchor}-steps">Steps ({len(steps)})</h3>')
-    if episode_dir is None:
-        parts.append('<p class="muted">The episode directory is gone; only the grade is shown.</p>')
-    elif not steps:
-        parts.append('<p class="muted">No trajectory was recorded.</p>')
+    steps = []
     previous_env: str | None = None
-    for k, step in enumerate(steps, start=1):
-        parts.append(_switch_mark(step, previous_env))
-        parts.append(step_html(step, episode_dir or Path("."), f"{anchor}-step-{k}", budget))
+    for k, step in enumerate(step_views(trajectory), start=1):
+        steps.append(step_item(step, previous_env, episode_dir or Path("."), f"{anchor}-step-{k}", budget))
         previous_env = step.environment or previous_env
-    parts.append("</details></section>")
-    return "".join(parts)
+    return EpisodeView(result, anchor, intent, _error_view(result), steps, directory_missing=episode_dir is None)
 
 
-def _index_html(report: RunReport) -> str:
-    rows = []
-    for k, result in enumerate(report.episodes, start=1):
-        category = CATEGORIES.get(result.error.category, ("", result.error.category))[1] if result.error else ""
-        rows.append(f'<tr><td><a href="#episode-{k}">{esc(result.episode_id)}</a></td>'
-                    f"<td>{esc(result.task_id or '?')}</td><td>{esc(result.domain)}</td>"
-                    f"<td>{verdict(result.overall_success)}</td><td>{esc(category)}</td><td>{result.steps}</td></tr>")
-    return ('<nav aria-labelledby="index-h"><h2 id="index-h">Episodes</h2><table><thead><tr>'
-            '<th scope="col">Episode</th><th scope="col">Task</th><th scope="col">Domain</th>'
-            '<th scope="col">Outcome</th><th scope="col">Error category</th><th scope="col">Steps</th></tr>'
-            f"</thead><tbody>{''.join(rows)}</tbody></table></nav>")
-
-
-def _summary_html(report: RunReport) -> str:
-    parts = ['<section aria-labelledby="summary-h"><h2 id="summary-h">Run summary</h2>']
+def _summary_sections(report: RunReport) -> list[dict[str, Any]]:
+    sections: list[dict[str, Any]] = []
     for section in [main_table([report]), navigation_table([report]), geolocation_section([report]),
                     *error_tables([report]), demo_table([report])]:
         if isinstance(section, Table):
-            parts.append(table_html(section))
+            sections.append({"table": section})
         elif isinstance(section, str):
-            parts.append(f"<h3>Geolocation</h3><pre>{esc(section)}</pre>")
-    if report.problems:
-        parts.append("<h3>Problems</h3><ul>" + "".join(f"<li>{esc(p)}</li>" for p in report.problems) + "</ul>")
-    return "".join(parts) + "</section>"
+            sections.append({"text": section})
+    return sections
 
 
 def _episode_directories(report: RunReport) -> list[Path | None]:
@@ -414,25 +310,37 @@ def _episode_directories(report: RunReport) -> list[Path | None]:
     return [by_name.get(e.episode_id) for e in report.episodes]
 
 
+# ------------------------------------------------------------------ the page (templates/viewer.html)
+def _escape(value: Any) -> Markup:
+    """Every value the template prints, escaped as html.escape does (quotes included); Markup passes as it is."""
+    if isinstance(value, Markup):
+        return value
+    return Markup(html.escape(value if isinstance(value, str) else str(value), quote=True))
+
+
+@lru_cache(maxsize=1)
+def _template() -> jinja2.Template:
+    env = jinja2.Environment(loader=jinja2.PackageLoader(__package__ or "ewa_mcp.graders", "templates"),
+                             autoescape=True, finalize=_escape, undefined=jinja2.StrictUndefined,
+                             keep_trailing_newline=True)
+    env.filters.update(clip=clip, as_json=as_json, short_number=lambda value: f"{value:g}")
+    return env.get_template("viewer.html")
+
+
 def render_html(report: RunReport) -> str:
     """The whole page for one graded run, read from report.run_dir for the steps and images."""
     budget = ImageBudget()
-    episodes = [episode_html(result, directory, k, budget)
+    episodes = [episode_view(result, directory, k, budget)
                 for k, (result, directory) in enumerate(zip(report.episodes, _episode_directories(report)), start=1)]
-    omitted = (f'<p class="note">{budget.omitted} image(s) were not embedded: the page holds at most '
-               f"{PAGE_IMAGE_BUDGET_BYTES // 1_000_000} MB of images; they remain in the run directory.</p>"
-               if budget.omitted else "")
-    generated = datetime.now(UTC).strftime("%Y-%m-%d %H:%M UTC")
-    return (
-        '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
-        f'<meta http-equiv="Content-Security-Policy" content="{CSP}">'
-        '<meta name="viewport" content="width=device-width, initial-scale=1">'
-        f"<title>ewa-grade trajectories: {esc(report.label)}</title><style>{STYLE}</style></head><body>"
-        f"<header><h1>Trajectories of run {esc(report.label)}</h1>"
-        f'<p class="muted">{esc(report.run_dir)} · {report.n_episodes} episode(s) · generated {generated} by '
-        "ewa-grade</p></header><main>"
-        f"{_summary_html(report)}{_index_html(report)}{omitted}{''.join(episodes)}</main></body></html>\n"
-    )
+    for episode in episodes:  # data: URIs are built here from image bytes, never from text of the run
+        for step in episode.steps:
+            for image in step.images:
+                if image.data_uri is not None:
+                    image.data_uri = Markup(image.data_uri)
+    return _template().render(
+        report=report, episodes=episodes, summary=_summary_sections(report), omitted=budget.omitted,
+        budget_mb=PAGE_IMAGE_BUDGET_BYTES // 1_000_000, csp=Markup(CSP), style=Markup(STYLE),  # constants
+        generated=datetime.now(UTC).strftime("%Y-%m-%d %H:%M UTC"))
 
 
 # ------------------------------------------------------------------ files

@@ -126,10 +126,10 @@ class SiteServer:
 def site_service(services: Any) -> SiteServer:
     """Services factory: ``await services.get("websites", site_service)``.
 
-    Uses ``services.config["emit_event"]`` (the episode manager's event sink) and optional
-    ``services.config["site_ports"]`` / ``["site_data_dir"]``."""
+    Uses ``services.emit_event`` (the episode manager's event sink) and the settings' optional
+    ``site_ports`` / ``site_data_dir``."""
     return SiteServer(
-        ports=services.config.get("site_ports"),
-        emit=services.config.get("emit_event"),
-        data_dir=services.config.get("site_data_dir"),
+        ports=services.settings.site_ports,
+        emit=services.emit_event,
+        data_dir=services.settings.site_data_dir,
     ).start()

@@ -112,7 +112,7 @@ def load_replay(path: Path) -> dict[str, list[ToolCall]]:
         for task_file in sorted(path.glob("*/task.json")):
             task_id = json.loads(task_file.read_text())["id"]
             trajectory = task_file.parent / "trajectory.jsonl"
-            for n, line in enumerate(trajectory.read_text().splitlines() if trajectory.exists() else [], 1):
+            for line in trajectory.read_text().splitlines() if trajectory.exists() else []:
                 try:
                     rec = json.loads(line)
                 except json.JSONDecodeError:

@@ -17,6 +17,7 @@ import anyio
 import httpx
 from mcp import Client, StdioServerParameters
 
+from ..settings import child_server_env
 from ..taskmodel import Task, TaskStore
 
 
@@ -74,14 +75,14 @@ async def connect(transport: str, task_dirs: list[Path], run_dir: Path):
             yield client
     elif transport == "stdio":
         params = StdioServerParameters(command=sys.executable, args=_server_args(task_dirs, run_dir),
-                                       env=dict(os.environ))
+                                       env=child_server_env(os.environ))
         async with Client(params) as client:
             yield client
     elif transport == "http":
         port = _free_port()
         proc = subprocess.Popen([sys.executable, *_server_args(task_dirs, run_dir), "--transport", "http",
                                  "--port", str(port)], stderr=subprocess.DEVNULL,
-                                env={k: v for k, v in os.environ.items() if k != "EWA_MCP_TOKEN"})  # loopback: no token
+                                env=child_server_env(os.environ))  # loopback: no token, not the caller's EWA_HOST/PORT
         try:
             deadline = time.monotonic() + 60
             while True:
@@ -91,7 +92,7 @@ async def connect(transport: str, task_dirs: list[Path], run_dir: Path):
                 except httpx.TransportError:
                     if proc.poll() is not None or time.monotonic() > deadline:
                         raise EvalError("the HTTP server did not start; run `ewa-mcp serve --transport http` "
-                                        "by hand to see why")
+                                        "by hand to see why") from None
                     await anyio.sleep(0.1)
             async with Client(f"http://127.0.0.1:{port}/mcp") as client:
                 yield client

@@ -10,7 +10,6 @@ first by file name.
 
 from __future__ import annotations
 
-import os
 import unicodedata
 from functools import lru_cache
 from pathlib import Path
@@ -92,8 +91,9 @@ def script_of(text: str) -> str:
 
 
 def _extra_dirs() -> list[Path]:
-    raw = os.environ.get("EWA_GEO_FONT_DIRS", "")
-    return [Path(p) for p in raw.split(os.pathsep) if p]
+    from ..settings import load_settings  # the geo_font_dirs setting (EWA_GEO_FONT_DIRS)
+
+    return list(load_settings().geo_font_dirs)
 
 
 @lru_cache(maxsize=64)

@@ -1,8 +1,10 @@
 """Choosing and building the kitchen backend: the built-in simulator or a real AI2-THOR build.
 
     episode option kitchen_backend = "sim" | "ai2thor"     (wins)
-    environment    EWA_KITCHEN_BACKEND = sim | ai2thor      (default: sim)
-    environment    EWA_AI2THOR_EXECUTABLE = <path to an AI2-THOR Unity build> | standin
+    setting        kitchen_backend (EWA_KITCHEN_BACKEND) = sim | ai2thor      (default: sim)
+    setting        ai2thor_executable (EWA_AI2THOR_EXECUTABLE) = <path to an AI2-THOR Unity build> | standin
+
+The settings come from ``services.settings`` (ewa_mcp/settings.py), read once at server start.
 
 The ai2thor backend never downloads a build: it needs a local executable. ``standin`` runs the
 project's headless stand-in (``python -m ewa_mcp.indoor.standin``), which speaks ai2thor's FIFO
@@ -11,17 +13,17 @@ protocol and is backed by the simulator.
 
 from __future__ import annotations
 
-import os
 from typing import Any
 
 from ..environment import EnvError
+from ..settings import Settings
 from .sim import KitchenSim
 
 BACKENDS = ("sim", "ai2thor")
 
 
-def backend_name(options: dict[str, Any] | None = None) -> str:
-    chosen = (options or {}).get("kitchen_backend") or os.environ.get("EWA_KITCHEN_BACKEND") or "sim"
+def backend_name(options: dict[str, Any] | None = None, settings: Settings | None = None) -> str:
+    chosen = (options or {}).get("kitchen_backend") or (settings.kitchen_backend if settings else "sim")
     chosen = str(chosen).strip().lower()
     if chosen not in BACKENDS:
         raise EnvError(f"unknown kitchen backend {chosen!r} (from the kitchen_backend option or EWA_KITCHEN_BACKEND); "
@@ -29,8 +31,8 @@ def backend_name(options: dict[str, Any] | None = None) -> str:
     return chosen
 
 
-def ai2thor_executable(config: dict[str, Any] | None = None) -> str:
-    value = (config or {}).get("ai2thor_executable") or os.environ.get("EWA_AI2THOR_EXECUTABLE")
+def ai2thor_executable(settings: Settings | None = None) -> str:
+    value = settings.ai2thor_executable if settings else None
     if not value:
         raise EnvError(
             "kitchen_backend=ai2thor needs a local AI2-THOR build (nothing is downloaded at run time): set "
@@ -45,10 +47,10 @@ def ai2thor_executable(config: dict[str, Any] | None = None) -> str:
 
 
 def make_controller(backend: str, scene: str, *, render_images: bool = False,
-                    config: dict[str, Any] | None = None) -> Any:
+                    settings: Settings | None = None) -> Any:
     """A controller for ``backend`` with ``scene`` loaded (blocking: it may start a process)."""
     if backend == "sim":
         return KitchenSim(scene)
     from .ai2thor_backend import Ai2ThorController
 
-    return Ai2ThorController(ai2thor_executable(config), scene, render_images=render_images)
+    return Ai2ThorController(ai2thor_executable(settings), scene, render_images=render_images)

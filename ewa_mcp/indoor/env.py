@@ -41,12 +41,12 @@ class KitchenEnvironment(Environment):
         self.mode = str(options.get("observation") or "text")
         if self.mode not in OBSERVATION_MODES:
             raise EnvError(f"unknown observation mode {self.mode!r}; use one of {', '.join(OBSERVATION_MODES)}")
-        backend = backend_name(options)
-        config = getattr(self.services, "config", {}) or {}
+        settings = self.services.settings
+        backend = backend_name(options, settings)
         want_frames = self.mode != "text"
 
         def build() -> KitchenSession:
-            controller = make_controller(backend, scene, render_images=want_frames, config=config)
+            controller = make_controller(backend, scene, render_images=want_frames, settings=settings)
             session = KitchenSession(controller, backend, scene, seed)
             try:
                 session.reset()

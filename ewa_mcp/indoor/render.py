@@ -90,7 +90,7 @@ def render_topdown(
             continue
         a = px(c["x"] - s["x"] / 2, c["z"] + s["z"] / 2)
         b = px(c["x"] + s["x"] / 2, c["z"] - s["z"] / 2)
-        colour = _FURNITURE_COLOURS.get(obj["objectType"], (180, 180, 180))
+        colour: tuple[int, ...] = _FURNITURE_COLOURS.get(obj["objectType"], (180, 180, 180))
         if obj["objectType"] == "Cabinet" and c["y"] > 1.2:
             draw.rectangle([a, b], outline=colour, width=1)  # wall cabinets: outline above the counter
             continue
@@ -126,8 +126,8 @@ def render_topdown(
         reach = 1.5 * scale
         cone = [(ax, az)]
         for delta in range(-45, 46, 15):
-            a = heading + math.radians(delta)
-            cone.append((ax + math.sin(a) * reach, az - math.cos(a) * reach))
+            angle = heading + math.radians(delta)
+            cone.append((ax + math.sin(angle) * reach, az - math.cos(angle) * reach))
         draw.polygon(cone, outline=(40, 120, 200))
         tip = (ax + math.sin(heading) * scale * 0.3, az - math.cos(heading) * scale * 0.3)
         left = (ax + math.sin(heading + 2.5) * scale * 0.18, az - math.cos(heading + 2.5) * scale * 0.18)

@@ -89,7 +89,7 @@ class StandIn:
 
         from .render import render_topdown
 
-        assert self.sim.spec is not None
+        assert self.sim.spec is not None and self.sim.last_event is not None  # both set by the scene's reset
         spec = self.sim.spec
         reachable = [(x, z) for x, z in (spec.world(c) for c in spec.reachable)]
         def label(object_id: str) -> str:

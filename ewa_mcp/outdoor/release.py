@@ -43,8 +43,10 @@ INTENT = ('Starting at "{start}", get walking directions on the map site to "{de
 
 def default_out_dir() -> Path:
     """$EWA_IMPORT_DIR, else $XDG_DATA_HOME/ewa-mcp/imported (~/.local/share/ewa-mcp/imported)."""
-    if os.environ.get("EWA_IMPORT_DIR"):
-        return Path(os.environ["EWA_IMPORT_DIR"])
+    from ..settings import load_settings  # the import_dir setting (EWA_IMPORT_DIR)
+
+    if (chosen := load_settings().import_dir) is not None:
+        return chosen
     base = Path(os.environ.get("XDG_DATA_HOME") or Path.home() / ".local" / "share")
     return base / "ewa-mcp" / "imported"
 

@@ -547,7 +547,7 @@ def node_label(graph: CityGraph, i: int) -> str:
         return " & ".join(graph.node_streets[i])
     street = graph.node_streets[i][0] if graph.node_streets[i] else ""
     ends = []
-    for j, _, s, _ in graph.adj[i]:
+    for j, _, _s, _ in graph.adj[i]:
         prev, cur = i, j
         for _ in range(50):
             if len(graph.node_streets[cur]) >= 2:
@@ -676,8 +676,9 @@ def _read(path: Path) -> dict[str, Any]:
 
 
 def _extra_dirs() -> list[Path]:
-    value = os.environ.get(EXTRA_DATA_ENV, "")
-    return [Path(p) for p in value.split(os.pathsep) if p]
+    from ..settings import load_settings  # the street_data setting; re-read: use_street_data extends it
+
+    return list(load_settings().street_data)
 
 
 def use_street_data(dirs: list[Path]) -> None:

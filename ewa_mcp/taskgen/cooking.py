@@ -60,7 +60,7 @@ def singles_out(recipe: dict[str, Any], catalog: Any, filters: dict[str, Any]) -
 def constraints_for(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dict[str, Any]]]:
     """(intent suffix, search filters) pairs that leave exactly this recipe among those with its name."""
     unique = sum(r["name"] == recipe["name"] for r in catalog.recipes) == 1
-    good = [("", {})] if unique else []
+    good: list[tuple[str, dict[str, Any]]] = [("", {})] if unique else []
     good += [(suffix, f) for suffix, f in constraint_options(recipe, catalog) if singles_out(recipe, catalog, f)]
     return good
 

@@ -164,7 +164,7 @@ def size_answer(product: Any, label: str, context: list[str]) -> TextAnswer:
 
 
 def cheapest_tasks(ctx: Context) -> list[Task]:
-    out = []
+    out: list[Task] = []
     rng = rng_for("shopping", "cheapest")
     for n in slots(out):
         product = rng.choice(ctx.products)
@@ -184,7 +184,7 @@ def cheapest_tasks(ctx: Context) -> list[Task]:
 
 
 def size_tasks(ctx: Context) -> list[Task]:
-    out = []
+    out: list[Task] = []
     rng = rng_for("shopping", "size")
     candidates = [p for p in ctx.products if len([s for s in p.sizes if s.grams or s.ml]) >= 2]
     for n in slots(out):
@@ -215,7 +215,7 @@ def size_tasks(ctx: Context) -> list[Task]:
 
 
 def calorie_tasks(ctx: Context) -> list[Task]:
-    out = []
+    out: list[Task] = []
     rng = rng_for("shopping", "calories")
     foods = [p for p in ctx.products if p.nutrition is not None]
     for n in slots(out):
@@ -253,7 +253,7 @@ def calorie_tasks(ctx: Context) -> list[Task]:
 
 
 def nearest_tasks(ctx: Context) -> list[Task]:
-    out = []
+    out: list[Task] = []
     rng = rng_for("shopping", "nearest")
     sold_out = [(p, o.size) for p in ctx.products for o in p.offers if o.stock == 0
                 and any(q.size == o.size and q.stock > 0 for q in p.offers)]

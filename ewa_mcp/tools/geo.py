@@ -10,7 +10,7 @@ from mcp.server.mcpserver.exceptions import ToolError
 from mcp_types import CallToolResult
 from pydantic import BaseModel, Field
 
-from ..environment import EnvError, Observation
+from ..environment import EnvError
 from ..episodes import EpisodeManager
 from ..response import StepOutput, env_action, footer, tool_result
 
@@ -108,7 +108,7 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         submission = {k: (v.strip() if isinstance(v, str) else v) or None for k, v in args.items()
                       if k not in ("lat", "lng")}
         submission = {"lat": float(lat), "lng": float(lng), **submission}
-        answer = (f"{lat:.5f}, {lng:.5f} — " + ", ".join(submission[k] or "?" for k in
+        answer = (f"{lat:.5f}, {lng:.5f} — " + ", ".join(str(submission[k] or "?") for k in
                                                           ("continent", "country", "city", "street")))
         episode = await episodes.finish(episode_id, answer=answer, submission=submission, tool="submit_location",
                                         args=args, requires="geo", check=check)

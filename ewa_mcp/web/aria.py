@@ -151,11 +151,11 @@ def parse_snapshot(text: str) -> list[AriaNode]:
             if parent is not None:
                 parent.props[prop.rstrip(":")] = _unquote_value(value)
             continue
-        key, value, _ = _split_key(content)
+        key, inline, _ = _split_key(content)
         node = _parse_key(key)
         node.parent = parent
-        if value is not None:
-            node.text = _unquote_value(value)
+        if inline is not None:
+            node.text = _unquote_value(inline)
         siblings.append(node)
         stack.append((depth, node))
     return [n for n in roots if isinstance(n, AriaNode)] or [AriaNode(role="generic", children=list(roots))]

@@ -119,13 +119,12 @@ def find_chromium(explicit: str | None = None, headless: bool = True) -> Chromiu
 
     Order: an explicit path, Playwright's bundled build, (headless only) Debian's headless
     shell, then a system Chromium or Chrome."""
-    explicit = explicit or os.environ.get("EWA_CHROMIUM") or None
     if explicit:
         path = Path(explicit)
         if path.is_file() and os.access(path, os.X_OK):
             return ChromiumInfo(str(path), "explicit")
         raise ChromiumNotFoundError(
-            f"the Chromium executable {explicit!r} (from the browser config or EWA_CHROMIUM) does not exist or "
+            f"the Chromium executable {explicit!r} (from the browser options or EWA_CHROMIUM) does not exist or "
             f"is not executable; fix the path, or unset it to use a discovered browser, or {INSTALL_HINT}"
         )
     bundled = playwright_bundled_chromium()
@@ -237,16 +236,16 @@ class BrowserService:
 async def chromium_service(services: Any) -> BrowserService:
     """Services factory: ``await services.get("chromium", chromium_service)``.
 
-    Reads ``services.config["browser"]`` (``executable_path``, ``headless``) and launches at once
+    Reads ``services.settings`` (the browser options, EWA_CHROMIUM) and launches at once
     so that a missing or broken browser is reported by the first web episode, not its first action."""
     from urllib.parse import urlsplit
 
     from .safety import normalize_origin
 
-    config = services.config.get("browser") or {}
-    direct = [urlsplit(normalize_origin(origin)).hostname or "" for origin in config.get("allow_origins", [])]
-    headless = config.get("headless", True)
-    service = BrowserService(find_chromium(config.get("executable_path"), headless), headless=headless,
+    settings = services.settings
+    direct = [urlsplit(normalize_origin(origin)).hostname or "" for origin in settings.browser.allow_origins]
+    headless = settings.browser.headless
+    service = BrowserService(find_chromium(settings.chromium_path(), headless), headless=headless,
                              direct_hosts=[h for h in direct if h])
     await service.browser()
     return service

@@ -1,4 +1,4 @@
-"""Server-wide browser settings: ``ServerConfig(services={"browser": {...}})``."""
+"""Server-wide browser options: the ``browser`` setting (ewa_mcp/settings.py; ``EWA_BROWSER__HEADLESS=false``)."""
 
 from __future__ import annotations
 

@@ -18,7 +18,6 @@ from urllib.parse import urldefrag
 
 from playwright.async_api import Error as PlaywrightError
 from playwright.async_api import TimeoutError as PlaywrightTimeoutError
-from pydantic import ValidationError
 
 from ..environment import EnvError, Environment, Observation
 from ..websites.common import EPISODE_HEADER
@@ -79,10 +78,7 @@ class BrowserEnvironment(Environment):
     # ------------------------------------------------------------ lifecycle
     async def reset(self, task: Any, options: dict[str, Any]) -> None:
         self.options = dict(options or {})
-        try:
-            self.config = BrowserConfig.model_validate(self.services.config.get("browser") or {})
-        except ValidationError as exc:
-            raise EnvError(f"invalid browser configuration (ServerConfig.services['browser']): {exc}") from exc
+        self.config = self.services.settings.browser  # validated when the settings were loaded
         try:
             for origin in self.config.allow_origins:
                 normalize_origin(origin)

@@ -32,7 +32,7 @@ def serve(tmp_path, *args: str, env: dict[str, str] | None = None) -> tuple[subp
         except httpx.TransportError:
             if proc.poll() is not None or time.monotonic() > deadline:
                 proc.kill()
-                raise AssertionError(f"the server did not start: {proc.stderr.read()}")
+                raise AssertionError(f"the server did not start: {proc.stderr.read()}") from None
             time.sleep(0.1)
 
 

@@ -13,6 +13,7 @@ import pytest
 from mcp import Client
 from mcp.client.streamable_http import streamable_http_client
 from mcp.shared._httpx_utils import create_mcp_http_client
+from mcp.shared.exceptions import MCPError
 
 from .servers import serve, stop
 
@@ -62,7 +63,7 @@ async def test_a_given_token_is_required_on_every_request(tmp_path, how):
         assert accepted.status_code == 200, accepted.text
         assert "serverInfo" in accepted.text
         await _play(port, TOKEN)  # every request of a real session carries it
-        with pytest.raises(Exception):
+        with pytest.RaisesGroup(MCPError, flatten_subgroups=True):  # the 401, as the client reports it
             async with Client(f"http://127.0.0.1:{port}/mcp") as client:
                 await client.list_tools()
     finally:

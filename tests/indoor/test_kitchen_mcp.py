@@ -13,6 +13,7 @@ from ewa_mcp.environment import Environment, Observation
 from ewa_mcp.indoor.env import KitchenEnvironment
 from ewa_mcp.indoor.planner import plan_ops
 from ewa_mcp.server import ServerConfig, build_server
+from ewa_mcp.settings import SettingsError
 
 KITCHEN_TOOLS = {"kitchen_teleport", "kitchen_move", "kitchen_rotate", "kitchen_pickup", "kitchen_put", "kitchen_drop",
                  "kitchen_open", "kitchen_close", "kitchen_slice", "kitchen_cook", "kitchen_toggle", "kitchen_action"}
@@ -46,7 +47,10 @@ def task(task_id: str, start: str = "embodied", scene: str = "FloorPlan12", step
 
 
 @pytest.fixture
-def server(tmp_path: Path):
+def server(tmp_path: Path, monkeypatch):
+    # The settings are read once, when the server is built: no kitchen variable of the caller's may leak in.
+    monkeypatch.delenv("EWA_AI2THOR_EXECUTABLE", raising=False)
+    monkeypatch.delenv("EWA_KITCHEN_BACKEND", raising=False)
     tasks = tmp_path / "tasks"
     tasks.mkdir()
     (tasks / "kitchen.json").write_text(json.dumps([
@@ -168,12 +172,12 @@ async def test_planner_oracle_replays_through_the_server(server):
 
 
 @pytest.mark.anyio
-async def test_bad_start_options_are_explained(server, monkeypatch):
+async def test_bad_start_options_are_explained(server, monkeypatch, tmp_path):
     mcp, _, _ = server
-    monkeypatch.delenv("EWA_AI2THOR_EXECUTABLE", raising=False)
     async with Client(mcp) as client:
         r = await client.call_tool("start_episode", {"task_id": "kitchen-only", "options": {"kitchen_backend": "ai2thor"}})
         assert r.is_error and "EWA_AI2THOR_EXECUTABLE" in r.content[0].text
-        monkeypatch.setenv("EWA_KITCHEN_BACKEND", "unity")
-        r = await client.call_tool("start_episode", {"task_id": "kitchen-only"})
-        assert r.is_error and "unknown kitchen backend 'unity'" in r.content[0].text
+    # A bad backend variable stops the server from starting, naming the variable and its values.
+    monkeypatch.setenv("EWA_KITCHEN_BACKEND", "unity")
+    with pytest.raises(SettingsError, match="EWA_KITCHEN_BACKEND='unity' is not valid.*sim or ai2thor"):
+        build_server(ServerConfig(task_dirs=[tmp_path / "tasks"], run_dir=tmp_path / "runs"))

@@ -12,6 +12,7 @@ from typing import Any
 import pytest
 
 from ewa_mcp.services import Services
+from ewa_mcp.settings import load_settings
 from ewa_mcp.web.chromium import ChromiumNotFoundError, chromium_service, find_chromium
 
 
@@ -42,7 +43,7 @@ def fixture_sites(chromium_path: str) -> Iterator[Any]:
 
 @pytest.fixture(scope="module")
 async def web_services(fixture_sites: Any, anyio_backend: str) -> AsyncIterator[Services]:
-    services = Services({"browser": {"action_timeout_s": 3.0}})
+    services = Services(load_settings({"browser": {"action_timeout_s": 3.0}}))
     await services.get("websites", lambda _: fixture_sites)
     await services.get("chromium", chromium_service)
     yield services

@@ -7,6 +7,7 @@ import stat
 
 import pytest
 
+from ewa_mcp.settings import load_settings
 from ewa_mcp.web import chromium
 from ewa_mcp.web.aria import parse_snapshot
 from ewa_mcp.web.elements import (ElementRefError, ElementRegistry, IdRef, RoleNameRef, parse_element,
@@ -204,7 +205,7 @@ def test_find_chromium_explicit_path_errors_name_the_fix(tmp_path, monkeypatch):
     fake.write_text("#!/bin/sh\n")
     fake.chmod(fake.stat().st_mode | stat.S_IXUSR)
     monkeypatch.setenv("EWA_CHROMIUM", str(fake))
-    info = chromium.find_chromium()
+    info = chromium.find_chromium(load_settings().chromium_path())
     assert info.path == str(fake) and info.source == "explicit"
     assert "--disable-background-networking" in info.launch_args()
     assert ("--no-sandbox" in info.launch_args()) == (os.geteuid() == 0)

@@ -199,7 +199,7 @@ def _street_labels(segments: list[Segment], projected: list[tuple[tuple[float, f
     lengths = {street: sum(math.dist(a, b) for a, b in segs) for street, segs in by_street.items()}
     order = [s for s in dict.fromkeys(first) if s in by_street]
     order += sorted((s for s in by_street if s not in order), key=lambda s: -lengths[s])
-    labels = []
+    labels: list[str] = []
     for street in order:
         if len(labels) >= limit:
             break

@@ -359,7 +359,7 @@ def build_recipe(dish: Dish, variant: Variant, recipe_id: str, source: str = "di
             if name in KITCHEN_FOODS:
                 raise SpecError(f"{source}:{variant.line}: {name} has an amount but no op uses it")
             products.append(name)
-    ingredients = [
+    ingredients: list[dict[str, Any]] = [
         {"name": name, "kitchen_type": name, "product_id": KITCHEN_PRODUCTS[name],
          "amount": variant.amounts.get(name, DEFAULT_AMOUNTS[name])}
         for name in kitchen
