@@ -14,7 +14,7 @@ from functools import lru_cache
 from typing import Any, Literal
 
 from ..environment import Environment, EnvError, Observation
-from .geo import angle_diff, cardinal, haversine_m
+from ..geometry import angle_diff, cardinal, haversine_m
 from .render import render_png
 from .scene import compute_scene, describe, places_here
 from .world import CityGraph, World, WorldError, get_world

@@ -25,7 +25,7 @@ from typing import Any
 import networkx as nx
 
 from .address import BLOCK_RULES, loose_street, normalize_street, parse_address
-from .geo import angle_diff, bearing_deg, cardinal_word, haversine_m
+from ..geometry import angle_diff, bearing_deg, cardinal_word, haversine_m
 
 DATA_DIR = Path(__file__).resolve().parent / "data"
 PACKAGED_CITIES = ["manhattan", "philadelphia", "boston", "pittsburgh"]

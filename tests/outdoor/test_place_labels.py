@@ -2,7 +2,7 @@
 must point at that node (play-test: "Boston Common (Tremont St & Park St)" was graded 270 m away)."""
 
 from ewa_mcp.outdoor.address import parse_address
-from ewa_mcp.outdoor.geo import haversine_m
+from ewa_mcp.geometry import haversine_m
 from ewa_mcp.outdoor.world import ANCHOR_RADIUS_M, _fold, label_fits
 from ewa_mcp.websites.map.places import WorldAdapter
 
