@@ -19,7 +19,7 @@ from ..taskmodel import GeoStart
 from .describe import describe_view
 from .graph import START, Neighbour, Standpoint, build_graph
 from .locations import LOCATIONS, Location
-from .render import render_png
+from .view_images import render_png
 from .scene import compose_view
 
 RELATIVE_TURNS = {"forward": 0, "ahead": 0, "straight": 0, "right": 90, "back": 180, "backward": 180,

@@ -15,7 +15,7 @@ from typing import Any, Literal
 
 from ..environment import Environment, EnvError, Observation
 from ..geometry import angle_diff, cardinal, haversine_m
-from .render import render_png
+from .street_view import render_png
 from .scene import compute_scene, describe, places_here
 from .world import CityGraph, World, WorldError, get_world
 

@@ -13,7 +13,7 @@ import sys
 import pytest
 from PIL import Image
 
-from ewa_mcp.geo import fonts
+from ewa_mcp.street_drawing import fonts
 from ewa_mcp.geo.describe import describe_view
 from ewa_mcp.geo.generate import build_tasks
 from ewa_mcp.geometry import FOUR_DIRECTIONS
@@ -22,7 +22,7 @@ from ewa_mcp.geo.languages import language
 from ewa_mcp.geo.styles import TREE_WORDS, VEHICLE_WORDS
 from ewa_mcp.geo.graph import build_graph
 from ewa_mcp.geo.locations import LOCATIONS, LOCATIONS_LIST
-from ewa_mcp.geo.render import render_png, render_view
+from ewa_mcp.geo.view_images import render_png, render_view
 from ewa_mcp.geo.scene import compose_view
 from ewa_mcp.geo.seeding import rng_for
 
@@ -54,7 +54,7 @@ def test_rendering_is_deterministic_and_views_differ():
 def test_scenes_are_identical_in_another_process_with_another_hash_seed():
     # Seeds come from sha256, never hash(): a view must not depend on PYTHONHASHSEED.
     code = ("from ewa_mcp.geo.scene import compose_view; from ewa_mcp.geo.locations import LOCATIONS; "
-            "from ewa_mcp.geo.render import render_png; import hashlib; "
+            "from ewa_mcp.geo.view_images import render_png; import hashlib; "
             "s = compose_view(LOCATIONS['g044'], 'p2', 'west'); "
             "print(s.seed, hashlib.sha256(render_png(s)).hexdigest())")
     here = compose_view(LOCATIONS["g044"], "p2", "west")

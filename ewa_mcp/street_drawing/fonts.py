@@ -1,4 +1,4 @@
-"""Fonts for sign text in any script, with a deterministic Latin fallback.
+"""Fonts for sign text in any script (and the script of a text), with a deterministic Latin fallback.
 
 Fonts are looked up at fixed paths (Debian's fonts-dejavu-core, fonts-noto-core and
 fonts-noto-cjk), never through fontconfig, so the choice does not depend on a user's font
