@@ -87,7 +87,7 @@ class StandIn:
     def frame(self) -> bytes:
         from PIL import Image
 
-        from .render import render_topdown
+        from .kitchen_map import render_topdown
 
         assert self.sim.spec is not None
         spec = self.sim.spec
