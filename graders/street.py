@@ -16,8 +16,6 @@ from ewa_mcp.taskmodel import PassedPlace, ReachedPlace
 
 from .models import ConditionResult, NavigationResult
 
-DEFAULT_RADIUS_M = 25.0
-
 
 def _number(value: Any) -> float | None:
     if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):

@@ -40,8 +40,6 @@ JPEG_QUALITY = 80
 MAX_IMAGE_FILE_BYTES = 40_000_000  # no observation is this big; such a file is not an observation
 TEXT_LIMIT = 4_000  # characters of one argument block or observation shown
 EMBEDDABLE = {"PNG": "image/png", "JPEG": "image/jpeg", "GIF": "image/gif", "WEBP": "image/webp"}
-PROTOCOL_TOOLS = {"start_episode", "get_observation", "switch_environment", "finish_episode", "episode_status",
-                  "list_tasks", "submit_location"}
 
 # No script, no fetch: only inline styles and data: images may load.
 CSP = "default-src 'none'; img-src data:; style-src 'unsafe-inline'; base-uri 'none'; form-action 'none'"
@@ -278,14 +276,6 @@ def _task_fields(episode_dir: Path) -> dict[str, Any]:
     except (OSError, UnicodeDecodeError, json.JSONDecodeError):
         return {}
     return raw if isinstance(raw, dict) else {}
-
-
-def outcome_label(result: EpisodeResult) -> str:
-    if result.overall_success is True:
-        return "success"
-    if result.overall_success is False:
-        return "failed"
-    return "not gradable"
 
 
 def _condition_row(condition: ConditionResult) -> str:

@@ -11,9 +11,6 @@ from dataclasses import dataclass, field
 
 from .countries import StreetSignStyle
 
-CLIMATES = ("oceanic", "continental", "nordic", "mediterranean", "humid_subtropical", "tropical", "arid",
-            "semi_arid", "highland")
-
 PARIS_SIGN = StreetSignStyle("#1d3557", "#ffffff", "#2e7d32", "wall",
                              "dark blue enamel plaque framed in green with white letters")
 MADRID_SIGN = StreetSignStyle("#f3efe2", "#1d3f95", "#b5651d", "wall",

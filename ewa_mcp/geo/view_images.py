@@ -149,7 +149,7 @@ def _along_buildings(draw: ImageDraw.ImageDraw, spec: ViewSpec) -> None:
             if arch.vertical_signs:
                 rng = random.Random(spec.seed + int(z0 * 10) + side)
                 px, py = _p(x - side * 0.05, height * 0.85, 1 / (z0 + 0.15))
-                px2, py2 = _p(x - side * 0.05, 0.35, 1 / (z0 + 0.15))
+                _, py2 = _p(x - side * 0.05, 0.35, 1 / (z0 + 0.15))
                 w = 18 / z0
                 colour = rng.choice([(200, 30, 40), (240, 200, 40), (30, 90, 170), (250, 250, 250)])
                 draw.rectangle([min(px, px - side * w), py, max(px, px - side * w), py2], fill=colour)

@@ -18,7 +18,7 @@ import math
 import os
 import threading
 import unicodedata
-from dataclasses import asdict, dataclass, field
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -80,9 +80,6 @@ class Place:
     # never show it.
     refers_to: str | None = None
 
-    def to_dict(self) -> dict[str, Any]:
-        return asdict(self)
-
 
 @dataclass
 class DirectionStep:
@@ -104,9 +101,6 @@ class Directions:
     distance_m: float
     duration_s: float
     steps: list[DirectionStep]
-
-    def to_dict(self) -> dict[str, Any]:
-        return asdict(self)
 
 
 def _fold(text: str) -> str:
