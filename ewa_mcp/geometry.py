@@ -13,7 +13,7 @@ from collections.abc import Sequence
 
 EARTH_RADIUS_M = 6_371_008.8  # IUGG mean radius
 EARTH_RADIUS_KM = 6371.0088  # the same radius in km (kept as its own literal: results are bit-identical)
-METRES_PER_DEGREE_LAT = 111_320.0  # flat-Earth offsets for a few metres (entrances beside a node)
+METRES_PER_DEGREE_LAT = 111_320.0  # flat-Earth metres per degree: entrances beside a node, the map site's SVG
 
 COMPASS_POINTS_16 = ("N", "NNE", "NE", "ENE", "E", "ESE", "SE", "SSE",
                      "S", "SSW", "SW", "WSW", "W", "WNW", "NW", "NNW")

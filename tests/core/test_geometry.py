@@ -59,7 +59,7 @@ def test_importing_geometry_loads_no_world_and_no_pillow():
 
 def test_no_copy_of_the_sphere_maths_outside_the_geometry_module():
     """Distance and bearing formulas live once; a second haversine or bearing elsewhere is a duplicate."""
-    pattern = re.compile(r"def (haversine\w*|\w*bearing\w*|signed_angle|compass_name|destination)\(|6371|asin\(")
+    pattern = re.compile(r"def (haversine\w*|\w*bearing\w*|signed_angle|compass_name|destination)\(|6371|asin\(|111_?320")
     found = []
     for folder in ("ewa_mcp", "graders", "websites"):
         for path in (ROOT / folder).rglob("*.py"):
