@@ -45,7 +45,8 @@ import json, sys
 from pathlib import Path
 from ewa_mcp.websites import serve
 cfg = json.loads(sys.argv[1])
-serve.SITES = {"home": serve.SITES["home"], "fixture": "ewa_mcp.web.testsite:create_app"}
+sys.path.insert(0, cfg["tests_dir"])  # the fixture site lives with the tests (tests/web/testsite.py)
+serve.SITES = {"home": serve.SITES["home"], "fixture": "web.testsite:create_app"}
 from ewa_mcp.server import ServerConfig, build_server
 from ewa_mcp.settings import load_settings
 mcp, _ = build_server(ServerConfig(task_dirs=[Path(cfg["tasks"])], run_dir=Path(cfg["runs"]),
@@ -193,7 +194,7 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
     ports = {"home": free_port(), "fixture": free_port()}
     urls = {name: f"http://127.0.0.1:{port}" for name, port in ports.items()}
     config = {"tasks": str(tmp / "tasks"), "runs": str(tmp / "runs"), "ports": ports,
-              "browser": {"executable_path": chromium}}
+              "browser": {"executable_path": chromium}, "tests_dir": str(ROOT / "tests")}
     ours_params = StdioServerParameters(command=sys.executable, args=["-c", OURS_LAUNCHER, json.dumps(config)],
                                         cwd=str(ROOT))
     peers = [("playwright-mcp", None)] + ([] if args.no_peer_settle0 else [("playwright-mcp --timeout-settle 0", 0)])

@@ -32,7 +32,7 @@ def summary(ms: list[float]) -> dict[str, float]:
 def bench_views(n: int) -> dict[str, Any]:
     from ewa_mcp.geo.describe import describe_view
     from ewa_mcp.geo.locations import LOCATIONS_LIST
-    from ewa_mcp.geo.render import render_png
+    from ewa_mcp.geo.view_images import render_png
     from ewa_mcp.geo.scene import compose_view
 
     rng = random.Random(3)
@@ -133,7 +133,7 @@ def main() -> None:
     parser.add_argument("--real-web", action="store_true")
     args = parser.parse_args()
 
-    from ewa_mcp.geo.fonts import installed_scripts
+    from ewa_mcp.street_drawing.fonts import installed_scripts
     from ewa_mcp.geo.locations import LOCATIONS_LIST
 
     out: dict[str, Any] = {"locations": len(LOCATIONS_LIST), "native_scripts": installed_scripts()}

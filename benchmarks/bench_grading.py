@@ -17,7 +17,7 @@ import time
 from pathlib import Path
 
 from ewa_mcp.graders import grade_run
-from ewa_mcp.graders.render import render
+from ewa_mcp.graders.report_tables import render
 from ewa_mcp.records import EpisodeRecorder
 
 PLATE = "Plate|+0.00|+0.90|-1.00"

@@ -22,7 +22,7 @@ import anyio
 
 from ewa_mcp.indoor.observe import build_observation
 from ewa_mcp.indoor.planner import check_recipe_executable
-from ewa_mcp.indoor.render import png_bytes, render_topdown
+from ewa_mcp.indoor.kitchen_map import png_bytes, render_topdown
 from ewa_mcp.indoor.scenes import SCENE_NAMES, _generate
 from ewa_mcp.indoor.session import KitchenSession
 from ewa_mcp.indoor.sim import KitchenSim

@@ -75,7 +75,7 @@ def bench_routes(world, pairs: int) -> dict[str, object]:
 
 
 def bench_render(world, n: int) -> dict[str, object]:
-    from ewa_mcp.outdoor.render import render_png
+    from ewa_mcp.outdoor.street_view import render_png
     from ewa_mcp.outdoor.scene import compute_scene
 
     rng = random.Random(5)

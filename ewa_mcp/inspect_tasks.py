@@ -151,7 +151,7 @@ def offline_token_counts(model: Any) -> Any:
         return model
     api = getattr(model, "api", None)
     if isinstance(api, MockLLM):
-        api.count_text_tokens = _estimate_tokens  # an instance attribute: only this model object changes
+        setattr(api, "count_text_tokens", _estimate_tokens)  # an instance attribute: only this model object changes
     return model
 
 

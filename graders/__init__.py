@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from .episode import grade_episode
 from .models import DomainAggregate, EpisodeResult, ErrorBreakdown, RunReport
-from .render import render_report
+from .report_tables import render_report
 from .report import RunDirError, grade_run
 
 __all__ = ["DomainAggregate", "EpisodeResult", "ErrorBreakdown", "RunDirError", "RunReport", "grade_episode",

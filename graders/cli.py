@@ -15,7 +15,7 @@ from pathlib import Path
 
 from .models import RunReport
 from .report import RunDirError, grade_run
-from .render import render
+from .report_tables import render
 
 
 def _radius(text: str) -> float:

@@ -25,8 +25,8 @@ import math
 import statistics
 from typing import Any
 
-from ewa_mcp.geo.fonts import script_of
-from ewa_mcp.geo.geometry import haversine_km
+from ewa_mcp.street_drawing.fonts import script_of
+from ewa_mcp.geometry import haversine_km
 from ewa_mcp.geo.locations import locations_by_coordinates
 from ewa_mcp.geo.names import (
     AMBIGUOUS_CONTINENTS,

@@ -6,7 +6,7 @@ from pathlib import Path
 
 from .errors import CATEGORIES
 from .models import RunReport
-from .render import MAIN_METRICS, _all_domains
+from .report_tables import MAIN_METRICS, _all_domains
 
 
 class PlotError(RuntimeError):

@@ -11,19 +11,10 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from ewa_mcp.geometry import haversine_m
 from ewa_mcp.taskmodel import PassedPlace, ReachedPlace
 
 from .models import ConditionResult, NavigationResult
-
-EARTH_RADIUS_M = 6_371_008.8  # mean Earth radius (IUGG)
-DEFAULT_RADIUS_M = 25.0
-
-
-def haversine_m(lat1: float, lng1: float, lat2: float, lng2: float) -> float:
-    p1, p2 = math.radians(lat1), math.radians(lat2)
-    dp, dl = p2 - p1, math.radians(lng2 - lng1)
-    a = math.sin(dp / 2) ** 2 + math.cos(p1) * math.cos(p2) * math.sin(dl / 2) ** 2
-    return 2 * EARTH_RADIUS_M * math.asin(min(1.0, math.sqrt(a)))
 
 
 def _number(value: Any) -> float | None:

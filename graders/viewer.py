@@ -33,7 +33,7 @@ from PIL import Image
 
 from .errors import CATEGORIES, GROUP_LABELS
 from .models import EpisodeResult, RunReport
-from .render import Table, demo_table, error_tables, geolocation_section, main_table, navigation_table
+from .report_tables import Table, demo_table, error_tables, geolocation_section, main_table, navigation_table
 from .rundir import episode_dirs, read_jsonl
 
 MAX_IMAGE_SIDE = 512  # px; larger images are downscaled (a page of street views stays browsable)

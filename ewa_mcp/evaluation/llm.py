@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import copy
 import json
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
@@ -92,7 +93,7 @@ def _render(result: Any) -> tuple[str, list[str]]:
 class LLMAgent:
     """Plays an episode by letting a model pick tool calls until it finishes or runs out of steps."""
 
-    def __init__(self, adapter_factory: Any, name: str = "llm", max_turns: int | None = None,
+    def __init__(self, adapter_factory: Callable[[], ModelAdapter], name: str = "llm", max_turns: int | None = None,
                  send_images: bool = True):
         self.adapter_factory = adapter_factory
         self.name = name
@@ -109,7 +110,7 @@ class LLMAgent:
             # is running then (or none): close it here, in the loop that used it.
             await adapter.aclose()
 
-    async def _loop(self, s: Session, adapter: Any, tools: list[ToolSpec]) -> None:
+    async def _loop(self, s: Session, adapter: ModelAdapter, tools: list[ToolSpec]) -> None:
         allowed = {t.name for t in tools}
         start_text, _ = _render(s.start)
         adapter.begin(SYSTEM_PROMPT, tools, f"{start_text}\n\nThe task: {s.task.intent}")

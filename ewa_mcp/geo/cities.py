@@ -3,6 +3,8 @@
 City-level cues are deliberately realistic: telephone area codes on shop signs, region codes
 on number plates, local transport (trams, taxis of a colour), street-sign styles. The wiki
 article of each city states the same facts so that an agent can match what it sees.
+
+Over 500 lines because it is a data table (one entry per city, 164 cities), not logic.
 """
 
 from __future__ import annotations
@@ -10,9 +12,6 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from .countries import StreetSignStyle
-
-CLIMATES = ("oceanic", "continental", "nordic", "mediterranean", "humid_subtropical", "tropical", "arid",
-            "semi_arid", "highland")
 
 PARIS_SIGN = StreetSignStyle("#1d3557", "#ffffff", "#2e7d32", "wall",
                              "dark blue enamel plaque framed in green with white letters")

@@ -26,7 +26,6 @@ WALL_WHITE = StreetSignStyle("#f5f5f0", "#111111", "#111111", "wall", "white pla
 POLE_GREEN = StreetSignStyle("#0b6b2e", "#ffffff", "#ffffff", "pole", "green street sign on a pole")
 POLE_BLUE = StreetSignStyle("#1f5fb0", "#ffffff", "#ffffff", "pole", "blue street sign on a pole")
 POLE_WHITE = StreetSignStyle("#f5f5f0", "#111111", "#111111", "pole", "white street sign on a pole")
-POLE_BLACK = StreetSignStyle("#1a1a1a", "#ffffff", "#ffffff", "pole", "black street sign on a pole")
 WALL_RED = StreetSignStyle("#b01818", "#ffffff", "#ffffff", "wall", "red plaque with white letters")
 WALL_TILE = StreetSignStyle("#f3efe2", "#1d3f95", "#1d3f95", "wall", "glazed tile plaque with blue letters")
 WALL_STONE = StreetSignStyle("#e6e0cf", "#222222", "#9a937f", "wall", "pale stone plaque with dark letters")

@@ -14,17 +14,17 @@ from __future__ import annotations
 from typing import Any
 
 from ..environment import EnvError, Environment, Observation
+from ..geometry import DIRECTION_DEG, FOUR_DIRECTIONS, angle_diff, cardinal_word
 from ..taskmodel import GeoStart
 from .describe import describe_view
-from .geometry import COMPASS, COMPASS_DEG, compass_name, signed_angle
 from .graph import START, Neighbour, Standpoint, build_graph
 from .locations import LOCATIONS, Location
-from .render import render_png
+from .view_images import render_png
 from .scene import compose_view
 
 RELATIVE_TURNS = {"forward": 0, "ahead": 0, "straight": 0, "right": 90, "back": 180, "backward": 180,
                   "backwards": 180, "behind": 180, "left": -90}
-COMPASS_ALIASES = {"n": "north", "e": "east", "s": "south", "w": "west"}
+DIRECTION_ALIASES = {"n": "north", "e": "east", "s": "south", "w": "west"}
 MATCH_TOLERANCE_DEG = 45.0
 
 
@@ -93,18 +93,18 @@ class GeoEnvironment(Environment):
     # ------------------------------------------------------------------ observation
     @property
     def allowed_views(self) -> tuple[str, ...]:
-        return ("north",) if self.setting == "baseline" else COMPASS
+        return ("north",) if self.setting == "baseline" else FOUR_DIRECTIONS
 
     def _neighbours(self) -> list[dict[str, Any]]:
         if self.setting == "baseline":
             return []
         out = []
         for n in self.graph[self.current].neighbours:
-            turn = signed_angle(self.facing_deg, n.bearing)
+            turn = angle_diff(n.bearing, self.facing_deg)
             out.append({
                 "id": n.id,
                 "heading_deg": round(n.bearing, 1),
-                "compass": compass_name(n.bearing),
+                "compass": cardinal_word(n.bearing),
                 "relative_deg": round(turn, 1),
                 "relative": _relative_word(turn),
                 "distance_m": n.distance_m,
@@ -132,7 +132,7 @@ class GeoEnvironment(Environment):
         neighbours = self._neighbours()
         where = "the start" if self.current == START else f"{self.graph[self.current].steps_from_start} step(s) " \
                                                              "from the start"
-        head = (f"Standpoint {self.current} ({where}); facing {compass_name(self.facing_deg)}. "
+        head = (f"Standpoint {self.current} ({where}); facing {cardinal_word(self.facing_deg)}. "
                 f"Setting: {self.setting}.")
         if neighbours:
             near = "; ".join(
@@ -148,7 +148,7 @@ class GeoEnvironment(Environment):
         data = {
             "setting": self.setting,
             "standpoint": self.current,
-            "facing": compass_name(self.facing_deg),
+            "facing": cardinal_word(self.facing_deg),
             "views": views,
             "neighbours": neighbours,
             "can_move": self.setting != "baseline",
@@ -161,20 +161,20 @@ class GeoEnvironment(Environment):
 
     # ------------------------------------------------------------------ actions
     async def look(self, direction: str) -> Observation:
-        direction = COMPASS_ALIASES.get(direction.strip().lower(), direction.strip().lower())
+        direction = DIRECTION_ALIASES.get(direction.strip().lower(), direction.strip().lower())
         if direction == "all":
             return self._views(self.allowed_views)
-        if direction not in COMPASS:
-            raise EnvError(f"unknown direction {direction!r}; use 'all' or one of {', '.join(COMPASS)}")
+        if direction not in FOUR_DIRECTIONS:
+            raise EnvError(f"unknown direction {direction!r}; use 'all' or one of {', '.join(FOUR_DIRECTIONS)}")
         if direction not in self.allowed_views:
             raise EnvError(f"the {self.setting} setting shows only the {', '.join(self.allowed_views)}-facing view; "
                            "call geo_look(direction='north') or submit_location")
-        self.facing_deg = float(COMPASS_DEG[direction])
+        self.facing_deg = float(DIRECTION_DEG[direction])
         return self._views((direction,))
 
     def _resolve_target(self, direction: str | None, neighbour: str | None) -> Neighbour:
         neighbours = self.graph[self.current].neighbours
-        listing = ", ".join(f"{n.id} ({compass_name(n.bearing)})" for n in neighbours)
+        listing = ", ".join(f"{n.id} ({cardinal_word(n.bearing)})" for n in neighbours)
         if (direction is None) == (neighbour is None):
             raise EnvError(f"give exactly one of direction (forward/back/left/right or north/east/south/west) or "
                            f"neighbour (one of {listing})")
@@ -186,16 +186,16 @@ class GeoEnvironment(Environment):
             if key in self.graph:
                 raise EnvError(f"{key} is not adjacent to {self.current}; its neighbours are {listing}")
             raise EnvError(f"unknown neighbour {neighbour!r}; the neighbours of {self.current} are {listing}")
-        word = COMPASS_ALIASES.get(direction.strip().lower(), direction.strip().lower())  # type: ignore[union-attr]
-        if word in COMPASS_DEG:
-            target = float(COMPASS_DEG[word])
+        word = DIRECTION_ALIASES.get(direction.strip().lower(), direction.strip().lower())  # type: ignore[union-attr]
+        if word in DIRECTION_DEG:
+            target = float(DIRECTION_DEG[word])
         elif word in RELATIVE_TURNS:
             target = (self.facing_deg + RELATIVE_TURNS[word]) % 360
         else:
             raise EnvError(f"unknown direction {direction!r}; use forward/back/left/right or north/east/south/west, "
                            f"or a neighbour id ({listing})")
-        best = min(neighbours, key=lambda n: abs(signed_angle(target, n.bearing)))
-        if abs(signed_angle(target, best.bearing)) > MATCH_TOLERANCE_DEG:
+        best = min(neighbours, key=lambda n: abs(angle_diff(n.bearing, target)))
+        if abs(angle_diff(best.bearing, target)) > MATCH_TOLERANCE_DEG:
             raise EnvError(f"there is no neighbour {word} of {self.current} (within {MATCH_TOLERANCE_DEG:.0f}°); "
                            f"its neighbours are {listing}")
         return best

@@ -13,7 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import lru_cache
 
-from .geometry import destination
+from ..geometry import destination
 from .locations import Location
 from .seeding import rng_for
 

@@ -25,9 +25,6 @@ from .countries import COUNTRIES
 from .locations import LOCATIONS_LIST, Location
 from .styles import CLIMATE
 
-SHARED_CUES = ("arch", "climate", "trees", "transport", "langs")
-
-
 def shared_cues(city: City) -> dict[str, Any]:
     country = COUNTRIES[city.iso]
     return {

@@ -443,13 +443,6 @@ LOCATIONS_LIST: list[Location] = [
 LOCATIONS: dict[str, Location] = {loc.id: loc for loc in LOCATIONS_LIST}
 
 
-def location(location_id: str) -> Location:
-    try:
-        return LOCATIONS[location_id]
-    except KeyError:
-        raise KeyError(f"unknown geolocation location {location_id!r}; ids run g001..g{len(LOCATIONS):03d}") from None
-
-
 @lru_cache(maxsize=1)
 def locations_by_coordinates() -> dict[tuple[float, float], Location]:
     """Index used by the grader to find a task's per-location aliases from its answer."""

@@ -162,7 +162,7 @@ def _hand_city(name: str, isos: Iterable[str]) -> City | None:
 @lru_cache(maxsize=2048)
 def city_names(name: str, country: str, lat: float, lng: float) -> frozenset[str]:
     """Every accepted spelling of the city ``name`` in ``country`` near (lat, lng), squashed."""
-    from .geometry import haversine_km
+    from ..geometry import haversine_km
 
     isos = resolve_country(country)
     accepted: set[str] = set(_city_variants(name))

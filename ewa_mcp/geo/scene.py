@@ -25,9 +25,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import lru_cache
 
+from ..geometry import DIRECTION_DEG, FOUR_DIRECTIONS, angle_diff
 from .cities import City
 from .countries import Country, StreetSignStyle
-from .geometry import COMPASS, COMPASS_DEG, signed_angle
 from .hardness import is_hard
 from .graph import Standpoint, build_graph
 from .languages import SHOP_KINDS, language
@@ -130,7 +130,7 @@ def _sign_lines(lines: tuple[str, ...]) -> tuple[Text, ...]:
 def ahead_heading(loc: Location, sp: Standpoint) -> str:
     """The compass view that looks along the street away from the start (towards p3 from p1)."""
     direction = loc.bearing if sp.offset_m >= 0 else (loc.bearing + 180) % 360
-    return min(COMPASS, key=lambda h: abs(signed_angle(COMPASS_DEG[h], direction)))
+    return min(FOUR_DIRECTIONS, key=lambda h: abs(angle_diff(direction, DIRECTION_DEG[h])))
 
 
 def city_cues_visible(loc: Location, sp: Standpoint) -> bool:
@@ -259,8 +259,8 @@ def _trees(rng, loc: Location, climate: Climate, composition: str) -> tuple[tupl
 
 @lru_cache(maxsize=4096)
 def compose_view(loc: Location, standpoint_id: str, heading: str) -> ViewSpec:
-    if heading not in COMPASS:
-        raise ValueError(f"heading must be one of {COMPASS}, not {heading!r}")
+    if heading not in FOUR_DIRECTIONS:
+        raise ValueError(f"heading must be one of {FOUR_DIRECTIONS}, not {heading!r}")
     graph = build_graph(loc)
     sp = graph[standpoint_id]
     rng = rng_for("view", loc.id, standpoint_id, heading)
@@ -269,7 +269,7 @@ def compose_view(loc: Location, standpoint_id: str, heading: str) -> ViewSpec:
     arch = ARCH[arch_key]
     climate = CLIMATE[city.climate]
 
-    rel = abs(signed_angle(loc.bearing, COMPASS_DEG[heading]))
+    rel = abs(angle_diff(DIRECTION_DEG[heading], loc.bearing))
     along = min(rel, 180 - rel) <= 45
     composition = "landmark" if (loc.landmark and heading == "north") else ("along" if along else "facade")
     city_cues = city_cues_visible(loc, sp)

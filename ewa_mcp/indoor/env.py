@@ -10,7 +10,7 @@ import anyio
 from ..environment import EnvError, Environment, Observation
 from .backends import backend_name, make_controller
 from .observe import build_observation
-from .render import frame_png, png_bytes, render_topdown
+from .kitchen_map import frame_png, png_bytes, render_topdown
 from .scenes import SceneError, canonical_scene
 from .session import ActionReport, KitchenSession
 

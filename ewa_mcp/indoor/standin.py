@@ -87,7 +87,7 @@ class StandIn:
     def frame(self) -> bytes:
         from PIL import Image
 
-        from .render import render_topdown
+        from .kitchen_map import render_topdown
 
         assert self.sim.spec is not None and self.sim.last_event is not None  # both set by the scene's reset
         spec = self.sim.spec

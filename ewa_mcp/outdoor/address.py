@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 import re
+import unicodedata
 
 ABBREVIATIONS = {
     "st": "street", "str": "street", "ave": "avenue", "av": "avenue", "avenue": "avenue", "blvd": "boulevard",
@@ -162,3 +163,20 @@ def philadelphia_block(street: str, number: int) -> Block | None:
 
 
 BLOCK_RULES = {"manhattan": manhattan_block, "philadelphia": philadelphia_block}
+
+
+def fold(text: str) -> str:
+    """Case-, accent- and punctuation-insensitive form for matching names."""
+    text = unicodedata.normalize("NFKD", text).encode("ascii", "ignore").decode()
+    text = text.lower().replace("&", " and ").replace("'", "").replace("’", "")
+    return " ".join("".join(c if c.isalnum() else " " for c in text).split())
+
+
+def same_address(address: str, number: int, street: str, aliases: dict[str, str]) -> bool:
+    """Whether ``address`` is number ``number`` on ``street`` (street names compared normalised, then loosely)."""
+    parsed = parse_address(address)
+    if parsed is None or parsed[0] != number:
+        return False
+    a, b = normalize_street(parsed[1], aliases), normalize_street(street, aliases)
+    return a == b or loose_street(a) == loose_street(b) and (a.split()[0] not in ("west", "east") or
+                                                             b.split()[0] not in ("west", "east"))

@@ -14,8 +14,8 @@ from functools import lru_cache
 from typing import Any, Literal
 
 from ..environment import Environment, EnvError, Observation
-from .geo import angle_diff, cardinal, haversine_m
-from .render import render_png
+from ..geometry import angle_diff, cardinal, haversine_m
+from .street_view import render_png
 from .scene import compute_scene, describe, places_here
 from .world import CityGraph, World, WorldError, get_world
 
@@ -23,11 +23,9 @@ Direction = Literal["forward", "forward-right", "right", "back-right", "back", "
 SECTORS: dict[str, tuple[float, float]] = {  # relative heading ranges (degrees, right positive)
     "forward": (-45.0, 45.0), "right": (45.0, 135.0), "back": (135.0, 225.0), "left": (-135.0, -45.0),
 }
-SECTOR_CENTRE = {"forward": 0.0, "right": 90.0, "back": 180.0, "left": -90.0}
 # The eight direction labels, clockwise from straight ahead, 45 degrees apart. At every node each
 # neighbour gets its own label (see direction_labels), so a label never names two streets.
 LABELS = ["forward", "forward-right", "right", "back-right", "back", "back-left", "left", "forward-left"]
-LABEL_ANGLE = {label: k * 45.0 for k, label in enumerate(LABELS)}
 RELATIVE_VIEWS = [("front", 0.0), ("right", 90.0), ("back", 180.0), ("left", 270.0)]
 ABSOLUTE_VIEWS = [("north", 0.0), ("east", 90.0), ("south", 180.0), ("west", 270.0)]
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import argparse
 import gzip
+import hashlib
 import importlib
 import json
 import math
@@ -20,8 +21,8 @@ import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ..geometry import LocalFrame, bearing_deg, haversine_m
 from .address import normalize_street, parse_address
-from .geo import LocalFrame, bearing_deg, haversine_m, opaque_id
 from .specs.base import CitySpec
 
 DATA_DIR = Path(__file__).resolve().parent / "data"
@@ -30,6 +31,13 @@ NODE_SPACING_M = 22.0  # Street View panoramas are ~10-25 m apart
 SNAP_M = 4.0  # crossings closer than this are one junction
 FORMAT = "ewa-street-graph"
 FORMAT_VERSION = 1
+
+
+def opaque_id(prefix: str, lat: float, lng: float) -> str:
+    """A stable id from a position rounded to ~1 m, hashed so that the id does not reveal where it is
+    (the agent must not be able to decode coordinates from node ids)."""
+    key = f"{lat:.5f},{lng:.5f}".encode()
+    return f"{prefix}-{hashlib.sha1(key).hexdigest()[:10]}"
 
 
 @dataclass

@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from .generate import FORMAT, FORMAT_VERSION
-from .geo import haversine_m
+from ..geometry import haversine_m
 
 KEY_RE = re.compile(r"^\s*(-?\d+(?:\.\d+)?)\s*[-_,;/ ]\s*(-?\d+(?:\.\d+)?)\s*$")
 UNNAMED = "unnamed street"

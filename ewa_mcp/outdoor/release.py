@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from .geo import haversine_m
+from ..geometry import haversine_m
 from .importer import (
     UNNAMED, CityBuild, Environment, ImportFormatError, ImportReport, build_city, endpoint_node, environments,
     parse_environment, quote,

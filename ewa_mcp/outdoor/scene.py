@@ -11,7 +11,7 @@ import hashlib
 import math
 from dataclasses import dataclass, field
 
-from .geo import angle_diff, bearing_deg, cardinal_word, haversine_m
+from ..geometry import angle_diff, bearing_deg, cardinal_word, haversine_m, offset_flat
 from .world import CityGraph, Place, World
 
 VIEW_HALF_ANGLE = 50.0  # degrees either side of the view heading that count as "in view"
@@ -25,7 +25,6 @@ FACADE_KINDS = {"landmark", "church", "museum", "library", "hotel", "theater", "
 # towards the building (at most). Building centroids can lie 80 m inside a large block; measuring to
 # them made a landmark's distance stay put while the agent walked past it.
 ENTRANCE_SETBACK_M = 10.0
-METRES_PER_DEGREE = 111_320.0
 
 
 @dataclass
@@ -88,9 +87,7 @@ def entrance(world: World, p: Place) -> tuple[float, float]:
     if p.id not in cache:
         node = world.node(p.node)
         d = min(p.offset_m, ENTRANCE_SETBACK_M) if p.heading_from_node is not None else 0.0
-        h = math.radians(p.heading_from_node or 0.0)
-        cache[p.id] = (node.lat + d * math.cos(h) / METRES_PER_DEGREE,
-                       node.lng + d * math.sin(h) / (METRES_PER_DEGREE * math.cos(math.radians(node.lat))))
+        cache[p.id] = offset_flat(node.lat, node.lng, p.heading_from_node or 0.0, d)
     return cache[p.id]
 
 

@@ -7,6 +7,8 @@ and walking directions that agree step by step with the embodied street walk.
     w.directions("poi-manhattan-flatiron-building", "store-target-herald-square")
 
 Graphs are loaded once per process (``get_world`` is cached). Node ids are opaque and stable.
+Turn-by-turn steps are built in ``directions.py``; places' addresses are tied to their nodes at load
+by ``anchoring.py``.
 """
 
 from __future__ import annotations
@@ -17,15 +19,16 @@ import json
 import math
 import os
 import threading
-import unicodedata
-from dataclasses import asdict, dataclass, field
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import networkx as nx
 
-from .address import BLOCK_RULES, loose_street, normalize_street, parse_address
-from .geo import angle_diff, bearing_deg, cardinal_word, haversine_m
+from ..geometry import bearing_deg, haversine_m
+from .address import BLOCK_RULES, fold, loose_street, normalize_street, parse_address, same_address
+from .anchoring import anchor_addresses
+from .directions import DirectionStep, Directions, walking_steps
 
 DATA_DIR = Path(__file__).resolve().parent / "data"
 PACKAGED_CITIES = ["manhattan", "philadelphia", "boston", "pittsburgh"]
@@ -79,41 +82,6 @@ class Place:
     # An address place: the point of interest at that address, for site records (events) only; pages
     # never show it.
     refers_to: str | None = None
-
-    def to_dict(self) -> dict[str, Any]:
-        return asdict(self)
-
-
-@dataclass
-class DirectionStep:
-    maneuver: str  # depart, continue, slight/turn/sharp left/right, u-turn (walking back), waypoint, arrive
-    street: str
-    distance_m: float
-    instruction: str
-    start_node: str = ""
-    end_node: str = ""
-    heading: float = 0.0  # compass bearing when starting this step
-
-
-@dataclass
-class Directions:
-    city: str
-    origin: str
-    destination: str
-    nodes: list[str]
-    distance_m: float
-    duration_s: float
-    steps: list[DirectionStep]
-
-    def to_dict(self) -> dict[str, Any]:
-        return asdict(self)
-
-
-def _fold(text: str) -> str:
-    """Case-, accent- and punctuation-insensitive form for matching names."""
-    text = unicodedata.normalize("NFKD", text).encode("ascii", "ignore").decode()
-    text = text.lower().replace("&", " and ").replace("'", "").replace("’", "")
-    return " ".join("".join(c if c.isalnum() else " " for c in text).split())
 
 
 class CityGraph:
@@ -259,8 +227,8 @@ class World:
                                                  city=graph.city, address=p.get("address", p["name"]),
                                                  lat=p["lat"], lng=p["lng"], node=p["node"])
         anchor_addresses(self.places, self.cities_by_name)
-        self._folded = {pid: _fold(f"{p.name} {p.kind}") for pid, p in self.places.items()}
-        self._folded_address = {pid: _fold(p.address) for pid, p in self.places.items()}
+        self._folded = {pid: fold(f"{p.name} {p.kind}") for pid, p in self.places.items()}
+        self._folded_address = {pid: fold(p.address) for pid, p in self.places.items()}
         self.places_at: dict[str, list[Place]] = {}
         for p in self.places.values():
             self.places_at.setdefault(p.node, []).append(p)
@@ -384,11 +352,11 @@ class World:
         number, street = parsed
         out: list[Place] = []
         seen: set[tuple[str, str]] = set()
-        folded = _fold(query)
+        folded = fold(query)
         for pid in sorted(self.places):
             p = self.places[pid]
             if p.city in cities and (self._folded_address[pid] == folded or
-                                     _same_address(p.address, number, street, self.cities_by_name[p.city].aliases)):
+                                     same_address(p.address, number, street, self.cities_by_name[p.city].aliases)):
                 key = (p.city, self._folded_address[pid])
                 if key in seen:
                     continue  # two places at one address: one address
@@ -427,7 +395,7 @@ class World:
         return out
 
     def _search_names(self, query: str, cities: list[str]) -> list[Place]:
-        q = _fold(query)
+        q = fold(query)
         tokens = q.split()
         scored = []
         for pid, text in self._folded.items():
@@ -468,7 +436,7 @@ class World:
             raise WorldError(f"{origin!r} is in {g1.city} and {destination!r} is in {g2.city}; walking directions "
                              "need both places in the same city")
         path = g1.route(a, b)
-        steps = _steps(g1, path, dest_place)
+        steps = walking_steps(g1, path, dest_place)
         distance = round(sum(s.distance_m for s in steps), 1)
         return Directions(city=g1.city, origin=origin, destination=destination, nodes=[g1.ids[i] for i in path],
                           distance_m=distance, duration_s=round(distance / WALKING_SPEED_MPS, 1), steps=steps)
@@ -488,183 +456,6 @@ def directions_via(world: "World", origin: str, via: str, destination: str) -> D
     distance = round(first.distance_m + second.distance_m, 1)
     return Directions(city=first.city, origin=origin, destination=destination, nodes=first.nodes + second.nodes[1:],
                       distance_m=distance, duration_s=round(distance / WALKING_SPEED_MPS, 1), steps=legs)
-
-
-# ---------------------------------------------------------------- where a place's address is
-# A task names a place with its address ("Boston Common (Tremont St & Park St)"), and the walk is graded
-# at the place's node: the two must be one spot. A place whose corner label names a corner away from its
-# node is moved to that corner when the corner is near the place itself, else relabelled with its node's
-# own corner; places sharing one address share one node.
-ANCHOR_RADIUS_M = 25.0  # the default arrival radius of a street goal
-ANCHOR_MAX_MOVE_M = 320.0  # a named corner farther than this from the place itself is not its corner
-ANCHOR_MAX_MOVE_OTHER_M = 225.0  # the same for anything but a park (a park reaches its corners from far)
-ANCHOR_KIND_ORDER = ["landmark", "park", "hotel", "museum", "church", "library", "theater", "market", "station"]
-
-
-def label_streets(graph: CityGraph, label: str) -> tuple[list[set[int]], bool]:
-    """The node sets of the streets a corner label names ("A & B", "X (A & B)", "A & B at C",
-    "A between B & C"), and whether it names a block rather than a corner."""
-    text = label.replace("(", ",").replace(")", ",").replace(" between ", " & ").replace(" at ", " & ")
-    parts = [q.strip() for chunk in text.split(",") for q in chunk.replace(" and ", " & ").split("&") if q.strip()]
-    found = [nodes for nodes in (graph.street_nodes(normalize_street(q, graph.aliases)) for q in parts) if nodes]
-    return found, " between " in label
-
-
-def label_corner(graph: CityGraph, label: str, lat: float, lng: float) -> int | None:
-    """The corner a label names (the one nearest the place when streets meet twice); None if it names none."""
-    streets, _ = label_streets(graph, label)
-    corners = {i for a in range(len(streets)) for b in range(a + 1, len(streets)) for i in streets[a] & streets[b]}
-    return graph.nearest(lat, lng, corners) if corners else None
-
-
-def label_fits(graph: CityGraph, label: str, node: int) -> bool:
-    """Whether a corner label describes this node: its corner within the arrival radius, or (a block
-    label, "A between B & C") the node on A between the two corners."""
-    streets, block = label_streets(graph, label)
-    if block and len(streets) == 3:
-        ends = [streets[0] & streets[k] for k in (1, 2)]
-        if node not in streets[0] or not all(ends):
-            return False
-        e1, e2 = (min(e, key=lambda i: haversine_m(graph.lat[i], graph.lng[i], graph.lat[node], graph.lng[node]))
-                  for e in ends)
-        span = haversine_m(graph.lat[e1], graph.lng[e1], graph.lat[e2], graph.lng[e2])
-        return (haversine_m(graph.lat[e1], graph.lng[e1], graph.lat[node], graph.lng[node]) +
-                haversine_m(graph.lat[e2], graph.lng[e2], graph.lat[node], graph.lng[node])) <= span + ANCHOR_RADIUS_M
-    corner = label_corner(graph, label, graph.lat[node], graph.lng[node])
-    return corner is not None and haversine_m(graph.lat[corner], graph.lng[corner], graph.lat[node],
-                                              graph.lng[node]) <= ANCHOR_RADIUS_M
-
-
-def _attach(p: Place, graph: CityGraph, i: int) -> None:
-    p.node = graph.ids[i]
-    p.offset_m = round(haversine_m(graph.lat[i], graph.lng[i], p.lat, p.lng), 1)
-    p.heading_from_node = round(bearing_deg(graph.lat[i], graph.lng[i], p.lat, p.lng), 1)
-
-
-def node_label(graph: CityGraph, i: int) -> str:
-    """A label derived from the node itself: its corner, or its street between the corners either side."""
-    if len(graph.node_streets[i]) >= 2:
-        return " & ".join(graph.node_streets[i])
-    street = graph.node_streets[i][0] if graph.node_streets[i] else ""
-    ends = []
-    for j, _, _s, _ in graph.adj[i]:
-        prev, cur = i, j
-        for _ in range(50):
-            if len(graph.node_streets[cur]) >= 2:
-                ends.append(next(n for n in graph.node_streets[cur] if n != street))
-                break
-            nxt = [k for k, _, s2, _ in graph.adj[cur] if k != prev and graph.streets[s2] == street]
-            if not nxt:
-                break
-            prev, cur = cur, nxt[0]
-    ends = sorted(set(ends))
-    return f"{street} between {ends[0]} & {ends[1]}" if len(ends) == 2 else street
-
-
-def anchor_addresses(places: dict[str, Place], graphs: dict[str, CityGraph]) -> None:
-    """Make every point of interest's address name the spot of its node (see ANCHOR_* above)."""
-    for p in sorted(places.values(), key=lambda p: p.id):
-        graph = graphs[p.city]
-        if p.refers_to or p.kind in ("address", "intersection") or parse_address(p.address) is not None:
-            continue
-        i = graph.index[p.node]
-        corner = None if label_streets(graph, p.address)[1] else label_corner(graph, p.address, p.lat, p.lng)
-        reach = ANCHOR_MAX_MOVE_M if p.kind == "park" else ANCHOR_MAX_MOVE_OTHER_M
-        if corner is not None and haversine_m(graph.lat[corner], graph.lng[corner], p.lat, p.lng) <= reach:
-            if corner != i:
-                _attach(p, graph, corner)  # at the corner itself: places named by one corner share its node
-        elif not label_fits(graph, p.address, i):
-            p.address = node_label(graph, i)
-    groups: dict[tuple[str, str], list[Place]] = {}
-    for p in places.values():
-        if parse_address(p.address) is not None:
-            groups.setdefault((p.city, _fold(p.address)), []).append(p)
-    for group in groups.values():
-        if len({p.node for p in group}) > 1:  # one address, one spot: the main building's node
-            rank = {k: n for n, k in enumerate(ANCHOR_KIND_ORDER)}
-            main = min(group, key=lambda p: (rank.get(p.kind, len(rank)), p.id))
-            graph = graphs[main.city]
-            for p in group:
-                if p.node != main.node:
-                    _attach(p, graph, graph.index[main.node])
-
-
-def _same_address(address: str, number: int, street: str, aliases: dict[str, str]) -> bool:
-    parsed = parse_address(address)
-    if parsed is None or parsed[0] != number:
-        return False
-    a, b = normalize_street(parsed[1], aliases), normalize_street(street, aliases)
-    return a == b or loose_street(a) == loose_street(b) and (a.split()[0] not in ("west", "east") or
-                                                             b.split()[0] not in ("west", "east"))
-
-
-def _maneuver(turn: float, reverses: bool = False) -> str:
-    """The instruction for a change of heading. A U-turn is only ever walking back the way one came;
-    a street leaving at a very sharp angle (a diagonal crossing a grid) is a sharp turn."""
-    if reverses:
-        return "u-turn"
-    a = abs(turn)
-    if a < 25:
-        return "continue"
-    side = "right" if turn > 0 else "left"
-    if a < 60:
-        return f"slight {side}"
-    if a <= 135:
-        return f"turn {side}"
-    return f"sharp {side}"
-
-
-def _round_m(d: float) -> int:
-    return int(round(d / 10.0) * 10) if d >= 15 else int(round(d))
-
-
-def _steps(g: CityGraph, path: list[int], dest: Place | None) -> list[DirectionStep]:
-    if len(path) == 1:
-        name = dest.name if dest else "your destination"
-        return [DirectionStep("arrive", g.node_streets[path[0]][0] if g.node_streets[path[0]] else "",
-                              0.0, f"You are already at {name}.", g.ids[path[0]], g.ids[path[0]], 0.0)]
-    segments: list[dict[str, Any]] = []
-    for k, (a, b) in enumerate(zip(path, path[1:])):
-        length, s, h = g.edge(a, b)
-        reverses = k > 0 and path[k - 1] == b  # walking straight back along the edge just walked
-        if segments and segments[-1]["street"] == s and not reverses:
-            seg = segments[-1]
-            seg["length"] += length
-            seg["end"] = b
-            seg["last_heading"] = h
-        else:
-            segments.append({"street": s, "length": length, "start": a, "end": b, "heading": h, "last_heading": h,
-                             "reverses": reverses})
-    steps: list[DirectionStep] = []
-    prev_heading = None
-    for k, seg in enumerate(segments):
-        street = g.streets[seg["street"]]
-        dist = round(seg["length"], 1)
-        if k == 0:
-            maneuver = "depart"
-            text = f"Head {cardinal_word(seg['heading'])} on {street} for {_round_m(dist)} m."
-        else:
-            maneuver = _maneuver(angle_diff(seg["heading"], prev_heading), seg["reverses"])
-            if maneuver == "continue":
-                text = f"Continue onto {street} for {_round_m(dist)} m."
-            elif maneuver == "u-turn":
-                text = f"Make a U-turn and walk back along {street} for {_round_m(dist)} m."
-            elif maneuver.startswith("sharp"):
-                text = f"Turn {maneuver} onto {street} and walk {_round_m(dist)} m."
-            else:
-                text = f"{maneuver.capitalize()} onto {street} and walk {_round_m(dist)} m."
-        steps.append(DirectionStep(maneuver, street, dist, text, g.ids[seg["start"]], g.ids[seg["end"]],
-                                   round(seg["heading"], 1)))
-        prev_heading = seg["last_heading"]
-    end = path[-1]
-    where = dest.name if dest else "your destination"
-    side = ""
-    if dest is not None and dest.heading_from_node is not None and dest.offset_m > 5 and prev_heading is not None:
-        rel = angle_diff(dest.heading_from_node, prev_heading)
-        side = " on your right" if rel > 20 else " on your left" if rel < -20 else " ahead"
-    steps.append(DirectionStep("arrive", g.streets[segments[-1]["street"]], 0.0, f"Arrive at {where}{side}.",
-                               g.ids[end], g.ids[end], round(prev_heading or 0.0, 1)))
-    return steps
 
 
 def _read(path: Path) -> dict[str, Any]:

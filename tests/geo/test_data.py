@@ -13,7 +13,7 @@ from ewa_mcp.geo.articles import country_title, write_articles
 from ewa_mcp.geo.cities import CITIES
 from ewa_mcp.geo.countries import COUNTRIES
 from ewa_mcp.geo.generate import FILE_NAMES, build_task, generate_tasks
-from ewa_mcp.geo.geometry import haversine_km
+from ewa_mcp.geometry import haversine_km
 from ewa_mcp.geo.graph import build_graph
 from ewa_mcp.geo.languages import LANGUAGES, SHOP_KINDS
 from ewa_mcp.geo.locations import DIFFICULTIES, LOCATIONS_LIST

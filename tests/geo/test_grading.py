@@ -15,7 +15,7 @@ from ewa_mcp.graders.geo import (
     render_geolocation_table,
 )
 
-from ewa_mcp.geo.geometry import destination, haversine_km
+from ewa_mcp.geometry import destination, haversine_km
 from ewa_mcp.geo.names import countries_match, resolve_continent, resolve_country, street_core, streets_match
 from ewa_mcp.taskmodel import GeoAnswer
 

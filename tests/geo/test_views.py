@@ -13,16 +13,16 @@ import sys
 import pytest
 from PIL import Image
 
-from ewa_mcp.geo import fonts
+from ewa_mcp.street_drawing import fonts
 from ewa_mcp.geo.describe import describe_view
 from ewa_mcp.geo.generate import build_tasks
-from ewa_mcp.geo.geometry import COMPASS
+from ewa_mcp.geometry import FOUR_DIRECTIONS
 from ewa_mcp.geo.hardness import is_hard
 from ewa_mcp.geo.languages import language
 from ewa_mcp.geo.styles import TREE_WORDS, VEHICLE_WORDS
 from ewa_mcp.geo.graph import build_graph
 from ewa_mcp.geo.locations import LOCATIONS, LOCATIONS_LIST
-from ewa_mcp.geo.render import render_png, render_view
+from ewa_mcp.geo.view_images import render_png, render_view
 from ewa_mcp.geo.scene import compose_view
 from ewa_mcp.geo.seeding import rng_for
 
@@ -32,7 +32,7 @@ QUOTED = re.compile(r"'[^']*'|\"[^\"]*\"")
 
 def all_views(loc):
     for sp in STANDPOINTS:
-        for heading in COMPASS:
+        for heading in FOUR_DIRECTIONS:
             yield sp, heading, compose_view(loc, sp, heading)
 
 
@@ -54,7 +54,7 @@ def test_rendering_is_deterministic_and_views_differ():
 def test_scenes_are_identical_in_another_process_with_another_hash_seed():
     # Seeds come from sha256, never hash(): a view must not depend on PYTHONHASHSEED.
     code = ("from ewa_mcp.geo.scene import compose_view; from ewa_mcp.geo.locations import LOCATIONS; "
-            "from ewa_mcp.geo.render import render_png; import hashlib; "
+            "from ewa_mcp.geo.view_images import render_png; import hashlib; "
             "s = compose_view(LOCATIONS['g044'], 'p2', 'west'); "
             "print(s.seed, hashlib.sha256(render_png(s)).hexdigest())")
     here = compose_view(LOCATIONS["g044"], "p2", "west")
@@ -114,7 +114,7 @@ def test_cue_placement_follows_difficulty():
             assert ("p0", "north") in sign_at, loc.id
         elif loc.difficulty == "city" and not is_hard(loc):
             assert steps == {1}, loc.id
-            for heading in COMPASS:  # no city-level cue anywhere at the start
+            for heading in FOUR_DIRECTIONS:  # no city-level cue anywhere at the start
                 spec = compose_view(loc, "p0", heading)
                 assert not spec.city_cues
                 area_coded = "{a}" in loc.country.phone
@@ -217,7 +217,7 @@ def test_hard_split_is_at_least_15_percent_and_no_single_cue_decides():
         rivals = [c for k, c in cities.items() if c.iso == loc.city.iso and k != loc.city_key]
         assert rivals and all(shared_cues(c) != mine for c in rivals), loc.id  # ... together they decide
         for sp in build_graph(loc):  # and no view anywhere shows a deciding cue
-            for heading in COMPASS:
+            for heading in FOUR_DIRECTIONS:
                 spec = compose_view(loc, sp, heading)
                 assert not _deciding_city_cues(loc, spec, describe_view(spec)), (loc.id, sp, heading)
                 assert spec.street_sign is None or spec.street_sign.style == loc.country.sign

@@ -27,7 +27,7 @@ import pytest
 
 from ewa_mcp.geo.articles import country_title
 from ewa_mcp.geo.graph import build_graph
-from ewa_mcp.geo.geometry import COMPASS
+from ewa_mcp.geometry import FOUR_DIRECTIONS
 from ewa_mcp.geo.locations import LOCATIONS_LIST, Location
 from ewa_mcp.geo.scene import compose_view
 from ewa_mcp.websites.wiki import store
@@ -45,7 +45,7 @@ def view_strings(loc: Location) -> set[str]:
     """Every string a view of this location quotes, as the text observation quotes it."""
     out: set[str] = set()
     for sp in build_graph(loc):
-        for heading in COMPASS:
+        for heading in FOUR_DIRECTIONS:
             spec = compose_view(loc, sp, heading)
             for sign in spec.shops:
                 out.update(t.native for t in sign.lines)

@@ -16,7 +16,7 @@ from ewa_mcp.taskgen.cooking import KITCHEN_SCOPE, kitchen_equipment, singles_ou
 from ewa_mcp.taskgen.recipe_goals import PIECE_SOURCE, goals_from_ops, recipe_ops
 from ewa_mcp.taskmodel import TaskStore
 from ewa_mcp.websites.recipes.build_recipes import products_in
-from ewa_mcp.websites.recipes.catalog import get_recipe, load_catalog
+from ewa_mcp.websites.recipes.catalog import load_catalog
 from ewa_mcp.websites.recipes.vocabulary import KITCHEN_PRODUCTS
 
 # The kitchen's action vocabulary: each recipe op is done with these kitchen tools.
@@ -41,7 +41,7 @@ def test_every_step_of_every_cooking_task_is_doable_or_marked(tasks):
     for tool in set(KITCHEN_TOOL_FOR_OP.values()):
         assert f"async def {tool}(" in source
     for task in tasks:
-        recipe = get_recipe(task.metadata["recipe_id"])
+        recipe = load_catalog().by_id.get(task.metadata["recipe_id"])
         assert KITCHEN_SCOPE in task.intent, task.id
         marked = []
         for number, step in enumerate(recipe["steps"], 1):
@@ -66,7 +66,7 @@ def test_buy_tasks_are_one_consistent_chain(tasks):
     assert buying
     for task in buying:
         foods = task.metadata["buy"] if isinstance(task.metadata["buy"], list) else [task.metadata["buy"]]
-        recipe = get_recipe(task.metadata["recipe_id"])
+        recipe = load_catalog().by_id.get(task.metadata["recipe_id"])
         have = scene_inventory(task.start.embodied.scene)["food"]
         for food in foods:
             assert food not in have, (task.id, food)  # really missing ...
@@ -93,7 +93,7 @@ def test_difficulty_follows_the_template_and_enough_are_hard(tasks):
     for task in tasks:
         if task.difficulty != "hard":
             continue
-        recipe = get_recipe(task.metadata["recipe_id"])
+        recipe = load_catalog().by_id.get(task.metadata["recipe_id"])
         constraints = task.metadata["constraint"].split(". ")
         assert len(constraints) == 2 and recipe["pair_id"], task.id  # a look-alike told apart by two constraints
         assert all(c in task.intent for c in constraints)
@@ -110,7 +110,7 @@ def test_every_cooking_kitchen_has_the_equipment_its_steps_and_goals_need(tasks)
     """No template (cook, buy, hard) sends the agent to a kitchen without the pan the step fries in, the
     bowl the goal wants the food in, ...: the shop sells food only, so equipment cannot be bought."""
     for task in tasks:
-        recipe = get_recipe(task.metadata["recipe_id"])
+        recipe = load_catalog().by_id.get(task.metadata["recipe_id"])
         inventory = scene_inventory(task.start.embodied.scene)
         have = inventory["tools"] | inventory["receptacles"]
         needed = kitchen_equipment(recipe) | {g.receptacle_type for g in task.embodied_goals
@@ -128,7 +128,7 @@ def test_cooking_goals_are_stated_in_the_kitchen_notes(tasks):
     places the food, not left for the agent to infer from an earlier step."""
     cooked_words = ("fried", "boiled", "toasted", "microwaved")
     for recipe_id in sorted({t.metadata["recipe_id"] for t in tasks}):
-        recipe = get_recipe(recipe_id)
+        recipe = load_catalog().by_id.get(recipe_id)
         last_note: dict[str, str] = {}
         for step in recipe["steps"]:
             for op in step["ops"]:

@@ -7,7 +7,7 @@ import pytest
 
 from ewa_mcp.environment import EnvError
 from ewa_mcp.outdoor.env import StreetEnvironment
-from ewa_mcp.outdoor.geo import angle_diff
+from ewa_mcp.geometry import angle_diff
 from ewa_mcp.services import Services
 from ewa_mcp.taskmodel import Task
 

@@ -2,8 +2,9 @@
 must point at that node (play-test: "Boston Common (Tremont St & Park St)" was graded 270 m away)."""
 
 from ewa_mcp.outdoor.address import parse_address
-from ewa_mcp.outdoor.geo import haversine_m
-from ewa_mcp.outdoor.world import ANCHOR_RADIUS_M, _fold, label_fits
+from ewa_mcp.geometry import haversine_m
+from ewa_mcp.outdoor.address import fold
+from ewa_mcp.outdoor.anchoring import ANCHOR_RADIUS_M, label_fits
 from ewa_mcp.websites.map.places import WorldAdapter
 
 
@@ -42,7 +43,7 @@ def test_corner_labels_resolve_on_the_map_within_the_goal_radius(world):
 def test_one_label_one_spot(world):
     spots: dict[tuple[str, str], set[str]] = {}
     for p in _pois(world):
-        spots.setdefault((p.city, _fold(p.address)), set()).add(p.node)
+        spots.setdefault((p.city, fold(p.address)), set()).add(p.node)
     assert {k: v for k, v in spots.items() if len(v) > 1} == {}
 
 

@@ -41,7 +41,7 @@ def test_a_view_across_a_park_shows_the_park_not_building_fronts(world):
         for i in range(len(graph.ids)):
             if graph.node_streets[i] != (street,):
                 continue
-            from ewa_mcp.outdoor.geo import bearing_deg, haversine_m
+            from ewa_mcp.geometry import bearing_deg, haversine_m
             if haversine_m(graph.lat[i], graph.lng[i], common.lat, common.lng) > 250:
                 continue
             h = bearing_deg(graph.lat[i], graph.lng[i], common.lat, common.lng)

@@ -8,7 +8,7 @@ import networkx as nx
 import pytest
 
 from ewa_mcp.outdoor import generate
-from ewa_mcp.outdoor.geo import angle_diff, haversine_m
+from ewa_mcp.geometry import angle_diff, haversine_m
 from ewa_mcp.outdoor.world import World, WorldError
 
 from .anchors import ANCHOR_TOLERANCE_M, INTERSECTION_ANCHORS
@@ -48,7 +48,7 @@ def test_anchor_intersections_within_tolerance(world, city, query, lat, lng, sou
 def test_manhattan_grid_runs_29_degrees_east_of_north(world):
     a = world.search("5th Ave & E 14th St", city="manhattan")[0]
     b = world.search("5th Ave & E 59th St", city="manhattan")[0]
-    from ewa_mcp.outdoor.geo import bearing_deg
+    from ewa_mcp.geometry import bearing_deg
 
     assert 27.0 < bearing_deg(a.lat, a.lng, b.lat, b.lng) < 31.0
     assert 3400 < haversine_m(a.lat, a.lng, b.lat, b.lng) < 3700  # 45 blocks at ~79 m

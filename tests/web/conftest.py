@@ -32,7 +32,7 @@ def chromium_path() -> str:
 
 @pytest.fixture(scope="module")
 def fixture_sites(chromium_path: str) -> Iterator[Any]:
-    from ewa_mcp.web.testsite import start_fixture_sites
+    from .testsite import start_fixture_sites
 
     events: list[tuple[str, dict[str, Any]]] = []
     server = start_fixture_sites(emit=lambda episode_id, event: events.append((episode_id, event)))

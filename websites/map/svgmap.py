@@ -13,7 +13,8 @@ import math
 from dataclasses import dataclass, field
 from xml.sax.saxutils import escape
 
-METRES_PER_DEGREE = 111_320.0
+from ewa_mcp.geometry import METRES_PER_DEGREE_LAT
+
 LatLng = tuple[float, float]
 
 
@@ -55,18 +56,18 @@ class Viewport:
         mid_lat = (min(lats) + max(lats)) / 2
         cos_lat = max(0.2, math.cos(math.radians(mid_lat)))
         # Grow small boxes to a minimum span so a 20 m walk still shows its block.
-        lat_span = max((max(lats) - min(lats)) * METRES_PER_DEGREE, min_span_m) / METRES_PER_DEGREE
-        m_per_deg_lng = METRES_PER_DEGREE * cos_lat
+        lat_span = max((max(lats) - min(lats)) * METRES_PER_DEGREE_LAT, min_span_m) / METRES_PER_DEGREE_LAT
+        m_per_deg_lng = METRES_PER_DEGREE_LAT * cos_lat
         lng_span = max((max(lngs) - min(lngs)) * m_per_deg_lng, min_span_m) / m_per_deg_lng
         if aspect is not None:
-            width_m, height_m = lng_span * METRES_PER_DEGREE * cos_lat, lat_span * METRES_PER_DEGREE
+            width_m, height_m = lng_span * METRES_PER_DEGREE_LAT * cos_lat, lat_span * METRES_PER_DEGREE_LAT
             if width_m < height_m * aspect * 0.75:
-                lng_span = height_m * aspect * 0.75 / (METRES_PER_DEGREE * cos_lat)
+                lng_span = height_m * aspect * 0.75 / (METRES_PER_DEGREE_LAT * cos_lat)
             elif width_m > height_m * aspect * 1.6:
-                lat_span = width_m / (aspect * 1.6) / METRES_PER_DEGREE
+                lat_span = width_m / (aspect * 1.6) / METRES_PER_DEGREE_LAT
         mid_lng = (min(lngs) + max(lngs)) / 2
-        pad_lat = margin_m / METRES_PER_DEGREE
-        pad_lng = margin_m / (METRES_PER_DEGREE * cos_lat)
+        pad_lat = margin_m / METRES_PER_DEGREE_LAT
+        pad_lng = margin_m / (METRES_PER_DEGREE_LAT * cos_lat)
         return cls(mid_lat - lat_span / 2 - pad_lat, mid_lng - lng_span / 2 - pad_lng,
                    mid_lat + lat_span / 2 + pad_lat, mid_lng + lng_span / 2 + pad_lng)
 
@@ -84,24 +85,24 @@ class Projection:
     def __init__(self, view: Viewport, width: int, max_height: int):
         self.view = view
         self.cos_lat = math.cos(math.radians(view.centre[0]))
-        width_m = (view.east - view.west) * METRES_PER_DEGREE * self.cos_lat
-        height_m = (view.north - view.south) * METRES_PER_DEGREE
+        width_m = (view.east - view.west) * METRES_PER_DEGREE_LAT * self.cos_lat
+        height_m = (view.north - view.south) * METRES_PER_DEGREE_LAT
         self.scale = min(width / width_m, max_height / height_m)  # pixels per metre, same on both axes
         self.width = round(width_m * self.scale)
         self.height = round(height_m * self.scale)
         self.metres_across = width_m
 
     def __call__(self, p: LatLng) -> tuple[float, float]:
-        x = (p[1] - self.view.west) * METRES_PER_DEGREE * self.cos_lat * self.scale
-        y = (self.view.north - p[0]) * METRES_PER_DEGREE * self.scale
+        x = (p[1] - self.view.west) * METRES_PER_DEGREE_LAT * self.cos_lat * self.scale
+        y = (self.view.north - p[0]) * METRES_PER_DEGREE_LAT * self.scale
         return round(x, 1), round(y, 1)
 
     def many(self, points: list[LatLng]) -> list[tuple[float, float]]:
         """``[self(p) for p in points]`` without a call per point: a long route's map projects
         ~10,000 street ends, and the per-call overhead was most of the page's time."""
         west, north = self.view.west, self.view.north
-        fx = METRES_PER_DEGREE * self.cos_lat * self.scale
-        fy = METRES_PER_DEGREE * self.scale
+        fx = METRES_PER_DEGREE_LAT * self.cos_lat * self.scale
+        fy = METRES_PER_DEGREE_LAT * self.scale
         return [(round((lng - west) * fx, 1), round((north - lat) * fy, 1)) for lat, lng in points]
 
 

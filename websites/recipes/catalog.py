@@ -222,6 +222,3 @@ def load_recipes() -> tuple[dict[str, Any], ...]:
 def load_catalog() -> Catalog:
     return Catalog(list(load_recipes()))
 
-
-def get_recipe(recipe_id: str) -> dict[str, Any] | None:
-    return load_catalog().by_id.get(recipe_id)

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
-from ..geo import Affine2D, LocalFrame, haversine_m
+from ...geometry import Affine2D, LocalFrame, haversine_m
 
 LatLng = tuple[float, float]
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 
-from ..geo import LocalFrame
+from ...geometry import LocalFrame
 from .base import CitySpec, FitPoint, FittedGrid, LatLng, Way
 
 COLUMNS = {"Commonwealth Place": -0.7, "Stanwix Street": 0.0, "Market Street": 1.0, "Wood Street": 2.0,

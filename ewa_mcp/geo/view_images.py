@@ -1,81 +1,44 @@
-"""Pillow renderer: a ViewSpec becomes a 600x400 PNG, deterministically.
+"""The geolocation views: a ViewSpec becomes a 600x400 PNG, deterministically.
 
 Three compositions: ``along`` (one-point perspective down the street), ``facade`` (facing
 the buildings across the street) and ``landmark`` (a square with its monument). The ground
-plane is projected with screen = (CX + K*X*u, HY + K*(CAM - Y)*u) where u = 1/depth, so
-facades, windows, lanes and kerbs converge consistently. Vehicles and signs are drawn
-larger than life so plates and sign text stay legible at this resolution.
+plane is projected by the toolkit's pinhole camera in inverse depth (``Camera.project_u``:
+screen = (W/2 + f*X*u, HY + f*(CAM - Y)*u), u = 1/depth), so facades, windows, lanes and kerbs
+converge consistently. Vehicles (``vehicle_drawing.py``) and signs are drawn larger than life so
+plates and sign text stay legible at this resolution. Sky, text, trees, colours and PNG encoding
+come from the street-view toolkit (``ewa_mcp/street_drawing``), shared with the walked cities.
 """
 
 from __future__ import annotations
 
-import io
-import math
 import random
 from functools import lru_cache
 
 from PIL import Image, ImageDraw
 
-from . import fonts
+from ..street_drawing import fonts
+from ..street_drawing.camera import Camera
+from ..street_drawing.colour import rgb, shade
+from ..street_drawing.png import encode_png
+from ..street_drawing.shapes import rect
+from ..street_drawing.sky import sky_gradient
+from ..street_drawing.text import draw_centred_lines
+from ..street_drawing.trees import draw_tree
 from .facade_details import along_roof, along_wall, front_extras, wall_texture, window_trim
-from .scene import ShopSign, StreetSign, Text, Vehicle, ViewSpec
+from .scene import ShopSign, StreetSign, Text, ViewSpec
 from .styles import ArchStyle
+from .vehicle_drawing import car_side, vehicle_along
 
 W, H = 600, 400
-CX, HY = 300, 175  # vanishing point
-K = 300.0  # pixels per world unit at u = 1 (one unit is about 10 m)
-CAM = 0.75  # camera height in world units: the ground at u = 1 is the bottom edge
+HY = 175  # the horizon: the vanishing point is (W/2, HY)
+CAM = 0.75  # camera height in world units (one unit is about 10 m): the ground at u = 1 is the bottom edge
+CAMERA = Camera(width=W, height=H, horizon=HY, eye_height=CAM)  # focal W/2 = 300 px per unit at u = 1
+_p = CAMERA.project_u
 ROAD_HALF = 0.5
 FACADE_X = 0.8
 
 
-def _p(x: float, y: float, u: float) -> tuple[float, float]:
-    return CX + K * x * u, HY + K * (CAM - y) * u
-
-
-def _shade(hex_colour: str, factor: float) -> tuple[int, int, int]:
-    r, g, b = (int(hex_colour[i : i + 2], 16) for i in (1, 3, 5))
-    return tuple(max(0, min(255, int(c * factor))) for c in (r, g, b))  # type: ignore[return-value]
-
-
-def _rect(draw: ImageDraw.ImageDraw, x0: float, y0: float, x1: float, y1: float, **kw) -> None:
-    """A rectangle from any two opposite corners (mirrored drawings swap them)."""
-    draw.rectangle([min(x0, x1), min(y0, y1), max(x0, x1), max(y0, y1)], **kw)
-
-
-def _rgb(hex_colour: str) -> tuple[int, int, int]:
-    return _shade(hex_colour, 1.0)
-
-
 # ------------------------------------------------------------------------------ text
-def _fit_font(draw: ImageDraw.ImageDraw, text: str, script: str, max_w: float, max_h: float, max_size: int = 28):
-    size = max(7, int(min(max_size, max_h)))
-    while size > 7:
-        f = fonts.font(script, size)
-        left, top, right, bottom = draw.textbbox((0, 0), text, font=f)
-        if right - left <= max_w and bottom - top <= max_h:
-            return f, (left, top, right, bottom)
-        size -= 1
-    f = fonts.font(script, 7)
-    return f, draw.textbbox((0, 0), text, font=f)
-
-
-def _draw_lines(draw: ImageDraw.ImageDraw, box: tuple[float, float, float, float], lines: list[tuple[str, str]],
-                fill: tuple[int, int, int] | str) -> None:
-    """Centre each (text, script) line in its share of the box."""
-    if not lines:
-        return
-    x0, y0, x1, y1 = box
-    line_h = (y1 - y0) / len(lines)
-    for i, (text, script) in enumerate(lines):
-        if not text:
-            continue
-        f, (left, t, r, b) = _fit_font(draw, text, script, (x1 - x0) * 0.92, line_h * 0.8)
-        tx = x0 + ((x1 - x0) - (r - left)) / 2 - left
-        ty = y0 + i * line_h + (line_h - (b - t)) / 2 - t
-        draw.text((tx, ty), text, font=f, fill=fill)
-
-
 def _drawable_lines(lines: tuple[Text, ...]) -> list[tuple[str, str]]:
     out = []
     native_lines = [fonts.drawable(t.native, t.latin) for t in lines]
@@ -88,21 +51,10 @@ def _drawable_lines(lines: tuple[Text, ...]) -> list[tuple[str, str]]:
     return out or [(lines[0].latin, "latin")]
 
 
-def _plain_text(text: str) -> tuple[str, str]:
-    """Plate text: native script when a font exists, else its ASCII characters only."""
-    script = fonts.script_of(text)
-    if fonts.has_font(script):
-        return text, script
-    return "".join(ch for ch in text if ch.isascii()).strip() or "?", "latin"
-
-
 # ------------------------------------------------------------------------------ sky and ground
 def _sky(img: Image.Image, spec: ViewSpec, horizon: int) -> None:
     draw = ImageDraw.Draw(img)
-    top, bottom = _rgb(spec.climate.sky_top), _rgb(spec.climate.sky_bottom)
-    for y in range(horizon + 1):
-        t = y / max(1, horizon)
-        draw.line([(0, y), (W, y)], fill=tuple(int(a + (b - a) * t) for a, b in zip(top, bottom, strict=True)))
+    sky_gradient(draw, W, horizon, rgb(spec.climate.sky_top), rgb(spec.climate.sky_bottom))
     for cx, cy, size in spec.clouds:
         x, y = cx * W, cy * horizon
         for dx, dy, r in ((0, 0, 22), (-20, 6, 16), (22, 5, 18), (8, -8, 15)):
@@ -129,8 +81,8 @@ def _window_grid(draw: ImageDraw.ImageDraw, side: int, z0: float, z1: float, flo
     x = side * FACADE_X
     floor_h = 0.32
     cols = max(2, int((z1 - z0) * 2.2))
-    dark = _shade(base_colour, 0.45)
-    frame = _shade(base_colour, 0.75)
+    dark = shade(base_colour, 0.45)
+    frame = shade(base_colour, 0.75)
     for f in range(1, floors):
         y0 = f * floor_h + 0.08
         y1 = y0 + (0.2 if arch.window in ("tall", "arched", "shuttered") else 0.14)
@@ -148,7 +100,7 @@ def _window_grid(draw: ImageDraw.ImageDraw, side: int, z0: float, z1: float, flo
 
 def _roof(draw: ImageDraw.ImageDraw, side: int, z0: float, z1: float, top: float, arch: ArchStyle) -> None:
     x = side * FACADE_X
-    colour = _rgb(arch.roof_colour)
+    colour = rgb(arch.roof_colour)
     if arch.roof == "mansard":
         quad = [_p(x, top, 1 / z0), _p(x, top, 1 / z1), _p(x - side * 0.12, top + 0.3, 1 / z1),
                 _p(x - side * 0.12, top + 0.3, 1 / z0)]
@@ -158,7 +110,7 @@ def _roof(draw: ImageDraw.ImageDraw, side: int, z0: float, z1: float, top: float
                 _p(x - side * 0.3, top + 0.25, 1 / z0)]
         draw.polygon(quad, fill=colour)
     else:
-        draw.line([_p(x, top, 1 / z0), _p(x, top, 1 / z1)], fill=_shade(arch.palette[0], 0.6), width=3)
+        draw.line([_p(x, top, 1 / z0), _p(x, top, 1 / z1)], fill=shade(arch.palette[0], 0.6), width=3)
 
 
 BUILDING_SPANS = ((0.7, 2.0), (2.0, 3.6), (3.6, 5.6), (5.6, 8.5))
@@ -169,17 +121,17 @@ def _along_buildings(draw: ImageDraw.ImageDraw, spec: ViewSpec) -> None:
     for side, row in ((-1, spec.buildings_left), (1, spec.buildings_right)):
         for (z0, z1), b in reversed(list(zip(BUILDING_SPANS, row, strict=True))):
             height = b.floors * 0.32
-            draw.polygon(_facade_quad(side, z0, z1, height), fill=_rgb(b.colour), outline=_shade(b.colour, 0.7))
+            draw.polygon(_facade_quad(side, z0, z1, height), fill=rgb(b.colour), outline=shade(b.colour, 0.7))
             along_wall(draw, _p, side * FACADE_X, z0, z1, height, b.colour, arch)
             _window_grid(draw, side, z0, z1, b.floors, arch, b.colour)
             # ground floor shopfront
             x = side * FACADE_X
             shop = [_p(x, 0, 1 / z0), _p(x, 0, 1 / z1), _p(x, 0.27, 1 / z1), _p(x, 0.27, 1 / z0)]
-            draw.polygon(shop, fill=_shade(b.colour, 0.35))
+            draw.polygon(shop, fill=shade(b.colour, 0.35))
             if arch.awnings or arch.arcade:
                 aw = [_p(x, 0.27, 1 / z0), _p(x, 0.27, 1 / z1), _p(x - side * 0.12, 0.22, 1 / z1),
                       _p(x - side * 0.12, 0.22, 1 / z0)]
-                draw.polygon(aw, fill=(150, 40, 40) if arch.awnings else _shade(b.colour, 0.8))
+                draw.polygon(aw, fill=(150, 40, 40) if arch.awnings else shade(b.colour, 0.8))
             if arch.veranda:
                 ver = [_p(x, 0.3, 1 / z0), _p(x, 0.3, 1 / z1), _p(x - side * 0.3, 0.3, 1 / z1),
                        _p(x - side * 0.3, 0.3, 1 / z0)]
@@ -191,13 +143,13 @@ def _along_buildings(draw: ImageDraw.ImageDraw, spec: ViewSpec) -> None:
                 for f in range(1, b.floors, 2):
                     px, py = _p(x, f * 0.32 + 0.05, 1 / (z0 + 0.3))
                     s = 14 / z0
-                    _rect(draw, px - s * side * 0.2, py, px + s * 0.8 * -side, py + s * 0.6, fill=(225, 225, 220))
+                    rect(draw, px - s * side * 0.2, py, px + s * 0.8 * -side, py + s * 0.6, fill=(225, 225, 220))
             _roof(draw, side, z0, z1, height, arch)
             along_roof(draw, _p, side * FACADE_X, side, z0, z1, height, b.colour, arch)
             if arch.vertical_signs:
                 rng = random.Random(spec.seed + int(z0 * 10) + side)
                 px, py = _p(x - side * 0.05, height * 0.85, 1 / (z0 + 0.15))
-                px2, py2 = _p(x - side * 0.05, 0.35, 1 / (z0 + 0.15))
+                _, py2 = _p(x - side * 0.05, 0.35, 1 / (z0 + 0.15))
                 w = 18 / z0
                 colour = rng.choice([(200, 30, 40), (240, 200, 40), (30, 90, 170), (250, 250, 250)])
                 draw.rectangle([min(px, px - side * w), py, max(px, px - side * w), py2], fill=colour)
@@ -206,18 +158,18 @@ def _along_buildings(draw: ImageDraw.ImageDraw, spec: ViewSpec) -> None:
     xl, yb = _p(-FACADE_X, 0, far_u)
     xr, _ = _p(FACADE_X, 0, far_u)
     top = _p(0, 1.6, far_u)[1]
-    draw.rectangle([xl, top, xr, yb], fill=_rgb(spec.arch.palette[-1]))
+    draw.rectangle([xl, top, xr, yb], fill=rgb(spec.arch.palette[-1]))
 
 
 def _along_ground(draw: ImageDraw.ImageDraw, spec: ViewSpec) -> None:
-    pave = _rgb(spec.arch.pavement)
+    pave = rgb(spec.arch.pavement)
     draw.polygon([(0, H), (W, H), (W, HY), (0, HY)], fill=pave)
     if spec.pedestrian:
         for i in range(1, 12):
             u = 1 / (1 + i * 0.7)
-            draw.line([_p(-FACADE_X, 0, u), _p(FACADE_X, 0, u)], fill=_shade(spec.arch.pavement, 0.88), width=1)
+            draw.line([_p(-FACADE_X, 0, u), _p(FACADE_X, 0, u)], fill=shade(spec.arch.pavement, 0.88), width=1)
         return
-    asphalt = _rgb(spec.climate.ground_tint)
+    asphalt = rgb(spec.climate.ground_tint)
     road = [_p(-ROAD_HALF, 0, 1.4), _p(ROAD_HALF, 0, 1.4), _p(ROAD_HALF, 0, 0.01), _p(-ROAD_HALF, 0, 0.01)]
     draw.polygon(road, fill=asphalt)
     for side in (-1, 1):
@@ -267,146 +219,9 @@ def _wires(draw: ImageDraw.ImageDraw, spec: ViewSpec) -> None:
     draw.line([_p(-0.62, 0.93, 1 / 2.6), _p(0.62, 0.9, 1 / 2.6)], fill=(30, 30, 30), width=1)
 
 
-# ------------------------------------------------------------------------------ vehicles
-def _plate_box(draw: ImageDraw.ImageDraw, cx: float, cy: float, w: float, h: float, plate) -> None:
-    style = plate.style
-    bg = style.rear_bg if (plate.rear and style.rear_bg) else style.bg
-    draw.rectangle([cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2], fill=_rgb(bg), outline=(20, 20, 20))
-    x0 = cx - w / 2
-    if style.band:
-        bw = w * 0.14
-        draw.rectangle([x0, cy - h / 2, x0 + bw, cy + h / 2], fill=_rgb(style.band_bg))
-        if plate.text is not None:
-            _draw_lines(draw, (x0, cy, x0 + bw, cy + h / 2), [(style.band, "latin")], (255, 255, 255))
-        x0 += bw
-    if plate.text is None:
-        return
-    lines = []
-    if plate.caption:
-        lines.append(_plain_text(plate.caption))
-    lines.append(_plain_text(plate.text))
-    _draw_lines(draw, (x0, cy - h / 2, cx + w / 2, cy + h / 2), lines, _rgb(style.fg))
-
-
-def _car_rear(draw: ImageDraw.ImageDraw, cx: float, bottom: float, scale: float, v: Vehicle, rear: bool) -> None:
-    w, h = 120 * scale, 70 * scale
-    body = _rgb(v.colour)
-    draw.rounded_rectangle([cx - w / 2, bottom - h, cx + w / 2, bottom - h * 0.08], radius=int(8 * scale),
-                           fill=body, outline=(30, 30, 30))
-    draw.rounded_rectangle([cx - w * 0.38, bottom - h * 1.45, cx + w * 0.38, bottom - h * 0.92],
-                           radius=int(10 * scale), fill=_shade(v.colour, 0.85), outline=(30, 30, 30))
-    draw.rectangle([cx - w * 0.32, bottom - h * 1.35, cx + w * 0.32, bottom - h * 0.98], fill=(60, 75, 90))
-    lamp = (200, 20, 20) if rear else (250, 245, 200)
-    for s in (-1, 1):
-        draw.rectangle([cx + s * w * 0.44 - 9 * scale, bottom - h * 0.8, cx + s * w * 0.44 + 9 * scale,
-                        bottom - h * 0.62], fill=lamp)
-        draw.ellipse([cx + s * w * 0.34 - 10 * scale, bottom - 10 * scale, cx + s * w * 0.34 + 10 * scale,
-                      bottom + 6 * scale], fill=(20, 20, 20))
-    if v.plate is not None:
-        _plate_box(draw, cx, bottom - h * 0.4, w * 0.72, h * 0.38, v.plate)
-
-
-def _vehicle_along(draw: ImageDraw.ImageDraw, spec: ViewSpec, v: Vehicle) -> None:
-    u = 0.92 - 0.82 * v.depth
-    lane = {"left": -0.25, "right": 0.25, "centre": 0.0}[v.side]
-    cx, bottom = _p(lane, 0, u)
-    scale = u * 1.1
-    if v.kind in ("car", "taxi", "classic_car"):
-        _car_rear(draw, cx, bottom, scale, v, rear=v.facing == "away")
-    elif v.kind in ("tram", "trolleybus", "double_decker", "minibus", "matatu", "chicken_bus", "painted_bus",
-                    "jeepney", "songthaew"):
-        tall = {"tram": 1.9, "double_decker": 2.6, "trolleybus": 1.9}.get(v.kind, 1.4)
-        w, h = 150 * scale, 70 * scale * tall
-        draw.rectangle([cx - w / 2, bottom - h, cx + w / 2, bottom - 6 * scale], fill=_rgb(v.colour),
-                       outline=(30, 30, 30))
-        rows = 2 if v.kind == "double_decker" else 1
-        for r in range(rows):
-            top = bottom - h + 10 * scale + r * h / 2
-            draw.rectangle([cx - w * 0.42, top, cx + w * 0.42, top + h * 0.25], fill=(60, 75, 90))
-        if v.kind in ("tram", "trolleybus"):
-            draw.line([(cx, bottom - h), (cx, bottom - h - 30 * scale)], fill=(30, 30, 30), width=2)
-    elif v.kind in ("tuk_tuk", "auto_rickshaw", "cycle_rickshaw", "becak"):
-        w, h = 70 * scale, 80 * scale
-        draw.polygon([(cx - w / 2, bottom - h * 0.3), (cx, bottom - h), (cx + w / 2, bottom - h * 0.3)],
-                     fill=_rgb(v.colour if v.colour != "#c9c9c9" else "#2e7d32"))
-        draw.rectangle([cx - w / 2, bottom - h * 0.55, cx + w / 2, bottom - 8 * scale], fill=(40, 40, 40))
-    elif v.kind in ("motorbikes", "boda_boda", "bicycles"):
-        for i in range(5):
-            bx = cx + (i - 2) * 22 * scale
-            draw.line([(bx, bottom), (bx, bottom - 40 * scale)], fill=(30, 30, 30), width=max(1, int(3 * scale)))
-            draw.ellipse([bx - 6 * scale, bottom - 55 * scale, bx + 6 * scale, bottom - 43 * scale], fill=(80, 60, 50))
-
-
-def _car_side(draw: ImageDraw.ImageDraw, cx: float, bottom: float, scale: float, v: Vehicle) -> None:
-    long = v.kind in ("tram", "double_decker", "trolleybus", "minibus", "matatu", "chicken_bus", "painted_bus",
-                      "jeepney", "songthaew")
-    w = (260 if long else 140) * scale
-    h = (110 if v.kind == "double_decker" else 80 if long else 42) * scale
-    body = _rgb(v.colour)
-    draw.rounded_rectangle([cx - w / 2, bottom - h, cx + w / 2, bottom - 8 * scale], radius=int(6 * scale),
-                           fill=body, outline=(30, 30, 30))
-    if not long:
-        draw.polygon([(cx - w * 0.3, bottom - h), (cx - w * 0.18, bottom - h * 1.6), (cx + w * 0.2, bottom - h * 1.6),
-                      (cx + w * 0.32, bottom - h)], fill=_shade(v.colour, 0.9), outline=(30, 30, 30))
-    else:
-        draw.rectangle([cx - w * 0.45, bottom - h * 0.9, cx + w * 0.45, bottom - h * 0.55], fill=(60, 75, 90))
-    front = 1 if v.facing == "right" else -1
-    _rect(draw, cx + front * w / 2 - front * 8 * scale, bottom - h * 0.75, cx + front * w / 2, bottom - h * 0.55,
-          fill=(250, 240, 180))
-    _rect(draw, cx - front * w / 2, bottom - h * 0.75, cx - front * w / 2 + front * 6 * scale, bottom - h * 0.55,
-          fill=(200, 20, 20))
-    for s in (-0.33, 0.33):
-        r = 11 * scale
-        draw.ellipse([cx + s * w - r, bottom - 2 * r, cx + s * w + r, bottom], fill=(20, 20, 20))
-
-
-# ------------------------------------------------------------------------------ trees
-def _tree(draw: ImageDraw.ImageDraw, kind: str, x: float, base: float, scale: float) -> None:
-    trunk = (95, 75, 55)
-    green = (70, 120, 60)
-    s = scale
-    if kind in ("coconut_palm", "palm", "date_palm", "fan_palm"):
-        height = {"fan_palm": 260, "coconut_palm": 170}.get(kind, 150) * s
-        lean = 18 * s if kind == "coconut_palm" else 0
-        draw.line([(x, base), (x + lean, base - height)], fill=(120, 100, 80), width=max(2, int(7 * s)))
-        tx, ty = x + lean, base - height
-        for ang in range(0, 360, 40):
-            a = math.radians(ang)
-            draw.line([(tx, ty), (tx + math.cos(a) * 45 * s, ty + math.sin(a) * 22 * s + 12 * s)], fill=(60, 120, 50),
-                      width=max(2, int(5 * s)))
-    elif kind in ("cypress",):
-        draw.ellipse([x - 14 * s, base - 170 * s, x + 14 * s, base - 5 * s], fill=(40, 80, 45))
-    elif kind in ("spruce", "pine", "araucaria"):
-        for i in range(4):
-            w = (50 - i * 10) * s
-            top = base - (40 + i * 35) * s
-            draw.polygon([(x - w, top + 45 * s), (x, top - 10 * s), (x + w, top + 45 * s)], fill=(35, 75, 45))
-        draw.line([(x, base), (x, base - 30 * s)], fill=trunk, width=max(2, int(5 * s)))
-    elif kind in ("umbrella_pine", "acacia"):
-        draw.line([(x, base), (x, base - 110 * s)], fill=trunk, width=max(2, int(6 * s)))
-        draw.ellipse([x - 70 * s, base - 140 * s, x + 70 * s, base - 95 * s],
-                     fill=(45, 95, 50) if kind == "umbrella_pine" else (110, 130, 60))
-    elif kind == "banana":
-        for ang in (-60, -25, 10, 45):
-            a = math.radians(ang - 90)
-            draw.line([(x, base - 40 * s), (x + math.cos(a) * 60 * s, base - 40 * s + math.sin(a) * 60 * s)],
-                      fill=(90, 160, 60), width=max(3, int(12 * s)))
-    else:
-        colour = {"jacaranda": (140, 100, 190), "birch": (110, 160, 80), "eucalyptus": (120, 145, 120),
-                  "ginkgo": (150, 175, 60), "flamboyant": (210, 70, 40), "frangipani": (110, 150, 90),
-                  "orange": (60, 120, 50), "olive": (140, 160, 130)}.get(kind, green)
-        bark = (235, 235, 230) if kind == "birch" else trunk
-        draw.line([(x, base), (x, base - 80 * s)], fill=bark, width=max(2, int(7 * s)))
-        draw.ellipse([x - 50 * s, base - 150 * s, x + 50 * s, base - 60 * s], fill=colour)
-        if kind == "orange":
-            for dx, dy in ((-20, -100), (15, -120), (25, -90)):
-                draw.ellipse([x + dx * s - 4 * s, base + dy * s - 4 * s, x + dx * s + 4 * s, base + dy * s + 4 * s],
-                             fill=(240, 140, 20))
-
-
 # ------------------------------------------------------------------------------ signs
 def _sign_box(draw: ImageDraw.ImageDraw, box: tuple[float, float, float, float], sign: ShopSign) -> None:
-    draw.rectangle(box, fill=_rgb(sign.bg), outline=(30, 30, 30))
+    draw.rectangle(box, fill=rgb(sign.bg), outline=(30, 30, 30))
     lines = _drawable_lines(sign.lines)
     if sign.kind == "pharmacy":
         x0, y0, x1, y1 = box
@@ -417,7 +232,7 @@ def _sign_box(draw: ImageDraw.ImageDraw, box: tuple[float, float, float, float],
         box = (x0 + c * 2.6, y0, x1, y1)
     if sign.phone:
         lines = lines + [(sign.phone, "latin")]
-    _draw_lines(draw, box, lines, _rgb(sign.fg))
+    draw_centred_lines(draw, box, lines, rgb(sign.fg))
 
 
 def _street_sign_box(draw: ImageDraw.ImageDraw, box: tuple[float, float, float, float], sign: StreetSign) -> None:
@@ -425,8 +240,8 @@ def _street_sign_box(draw: ImageDraw.ImageDraw, box: tuple[float, float, float, 
     x0, y0, x1, y1 = box
     if style.mount == "pole":
         draw.line([((x0 + x1) / 2, y1), ((x0 + x1) / 2, y1 + 150)], fill=(110, 110, 110), width=4)
-    draw.rectangle(box, fill=_rgb(style.bg), outline=_rgb(style.border), width=3)
-    _draw_lines(draw, (x0 + 4, y0 + 3, x1 - 4, y1 - 3), _drawable_lines(sign.lines), _rgb(style.fg))
+    draw.rectangle(box, fill=rgb(style.bg), outline=rgb(style.border), width=3)
+    draw_centred_lines(draw, (x0 + 4, y0 + 3, x1 - 4, y1 - 3), _drawable_lines(sign.lines), rgb(style.fg))
 
 
 # ------------------------------------------------------------------------------ compositions
@@ -442,7 +257,7 @@ def _render_along(img: Image.Image, spec: ViewSpec) -> None:
     for kind, side, depth in spec.trees:
         u = 1 / (1.4 + depth * 6)
         x, base = _p((-1 if side == "left" else 1) * 0.66, 0, u)
-        _tree(draw, kind, x, base, u * 1.2)
+        draw_tree(draw, kind, x, base, u * 1.2)
     if spec.skytrain:
         _skytrain(draw)
     # blade signs, nearest last
@@ -457,10 +272,10 @@ def _render_along(img: Image.Image, spec: ViewSpec) -> None:
         xb, yb = _p(side * (FACADE_X - 0.42), 0.42, u)
         _sign_box(draw, (min(xa, xb), ya, max(xa, xb), yb), sign)
     for v in sorted(spec.vehicles, key=lambda v: -v.depth):
-        _vehicle_along(draw, spec, v)
+        vehicle_along(draw, _p, v)
     if spec.street_sign is not None:
         side = -1 if spec.street_sign.side == "left" else 1
-        cx = CX + side * 205
+        cx = W // 2 + side * 205
         n = len(spec.street_sign.lines)
         _street_sign_box(draw, (cx - 85, 120, cx + 85, 120 + 22 * n + 10), spec.street_sign)
 
@@ -474,7 +289,7 @@ def _facade_row(draw: ImageDraw.ImageDraw, spec: ViewSpec, base: int, floor_px: 
     for b in spec.buildings_right:
         w = rng.randint(140, 190)
         top = base - b.floors * floor_px
-        draw.rectangle([x, top, x + w, base], fill=_rgb(b.colour), outline=_shade(b.colour, 0.7))
+        draw.rectangle([x, top, x + w, base], fill=rgb(b.colour), outline=shade(b.colour, 0.7))
         wall_texture(draw, (x, top, x + w, base), b.colour, arch, rng)
         cols = max(2, w // 40)
         for f in range(1, b.floors):
@@ -482,8 +297,8 @@ def _facade_row(draw: ImageDraw.ImageDraw, spec: ViewSpec, base: int, floor_px: 
             wh = floor_px - 16 if arch.window in ("tall", "arched", "shuttered") else floor_px - 20
             for c in range(cols):
                 wx = x + (c + 0.5) * w / cols
-                draw.rectangle([wx - 9, y0, wx + 9, y0 + wh], fill=_shade(b.colour, 0.45),
-                               outline=_shade(b.colour, 0.8))
+                draw.rectangle([wx - 9, y0, wx + 9, y0 + wh], fill=shade(b.colour, 0.45),
+                               outline=shade(b.colour, 0.8))
                 window_trim(draw, wx, y0, wh, arch)
             if arch.balconies and f % 2 == 1:
                 draw.rectangle([x + 6, y0 + wh, x + w - 6, y0 + wh + 4], fill=(40, 40, 40))
@@ -491,17 +306,17 @@ def _facade_row(draw: ImageDraw.ImageDraw, spec: ViewSpec, base: int, floor_px: 
                 draw.rectangle([x + w - 30, y0 + 5, x + w - 12, y0 + 17], fill=(228, 228, 222))
         if arch.roof == "mansard":
             draw.polygon([(x, top), (x + w, top), (x + w - 14, top - 26), (x + 14, top - 26)],
-                         fill=_rgb(arch.roof_colour))
+                         fill=rgb(arch.roof_colour))
         elif arch.roof in ("pitched", "curved_tile"):
             draw.polygon([(x - 4, top), (x + w + 4, top), (x + w - 10, top - 22), (x + 10, top - 22)],
-                         fill=_rgb(arch.roof_colour))
+                         fill=rgb(arch.roof_colour))
         elif arch.roof == "gabled":
-            draw.polygon([(x, top), (x + w, top), (x + w / 2, top - 45)], fill=_rgb(b.colour),
-                         outline=_shade(b.colour, 0.6))
+            draw.polygon([(x, top), (x + w, top), (x + w / 2, top - 45)], fill=rgb(b.colour),
+                         outline=shade(b.colour, 0.6))
         else:
-            draw.rectangle([x - 3, top - 6, x + w + 3, top], fill=_shade(b.colour, 0.6))
+            draw.rectangle([x - 3, top - 6, x + w + 3, top], fill=shade(b.colour, 0.6))
         front_extras(draw, (x, top, x + w, base), floor_px, b.colour, arch, rng)
-        draw.rectangle([x + 4, base - floor_px + 6, x + w - 4, base], fill=_shade(b.colour, 0.3))
+        draw.rectangle([x + 4, base - floor_px + 6, x + w - 4, base], fill=shade(b.colour, 0.3))
         if arch.veranda:
             draw.rectangle([x, base - floor_px - 4, x + w, base - floor_px + 4], fill=(120, 120, 118))
             for px in (x + 8, x + w - 8):
@@ -517,16 +332,16 @@ def _render_facade(img: Image.Image, spec: ViewSpec) -> None:
     draw = ImageDraw.Draw(img)
     horizon, base, floor_px = 170, 300, 38
     _sky(img, spec, horizon)
-    draw.rectangle([0, horizon, W, base], fill=_shade(spec.arch.palette[0], 0.8))
+    draw.rectangle([0, horizon, W, base], fill=shade(spec.arch.palette[0], 0.8))
     spans = _facade_row(draw, spec, base, floor_px)
-    pave = _rgb(spec.arch.pavement)
+    pave = rgb(spec.arch.pavement)
     draw.rectangle([0, base, W, 322], fill=pave)
     if spec.pedestrian:
         draw.rectangle([0, 322, W, H], fill=pave)
         for y in range(330, H, 14):
-            draw.line([(0, y), (W, y)], fill=_shade(spec.arch.pavement, 0.9))
+            draw.line([(0, y), (W, y)], fill=shade(spec.arch.pavement, 0.9))
     else:
-        draw.rectangle([0, 322, W, H], fill=_rgb(spec.climate.ground_tint))
+        draw.rectangle([0, 322, W, H], fill=rgb(spec.climate.ground_tint))
         draw.line([(0, 322), (W, 322)], fill=(205, 205, 200), width=3)
         if spec.edge_line:
             colour = (235, 190, 0) if spec.edge_line == "yellow" else (240, 240, 240)
@@ -540,7 +355,7 @@ def _render_facade(img: Image.Image, spec: ViewSpec) -> None:
         for y in (340, 350):
             draw.line([(0, y), (W, y)], fill=(90, 90, 92), width=2)
     for kind, _side, depth in spec.trees:
-        _tree(draw, kind, 60 + depth * 800 % (W - 120), 318, 0.85)
+        draw_tree(draw, kind, 60 + depth * 800 % (W - 120), 318, 0.85)
     for sign in spec.shops:
         idx = int(sign.side[1:])
         if idx >= len(spans):
@@ -553,7 +368,7 @@ def _render_facade(img: Image.Image, spec: ViewSpec) -> None:
     for v in spec.vehicles:
         bottom = 392 if v.side == "near" else 352
         cx = 170 if v.side == "near" else 430
-        _car_side(draw, cx, bottom, 1.0 if v.side == "near" else 0.8, v)
+        car_side(draw, cx, bottom, 1.0 if v.side == "near" else 0.8, v)
     if spec.street_sign is not None:
         n = len(spec.street_sign.lines)
         x0 = spans[0][0] + 20 if spans else 20
@@ -566,33 +381,33 @@ def _render_landmark(img: Image.Image, spec: ViewSpec) -> None:
     draw = ImageDraw.Draw(img)
     horizon = 250
     _sky(img, spec, horizon)
-    pave = _rgb(spec.arch.pavement)
+    pave = rgb(spec.arch.pavement)
     draw.rectangle([0, horizon, W, H], fill=pave)
     for i in range(1, 9):
         y = horizon + i * i * 2.2
-        draw.line([(0, y), (W, y)], fill=_shade(spec.arch.pavement, 0.9))
+        draw.line([(0, y), (W, y)], fill=shade(spec.arch.pavement, 0.9))
     rng = random.Random(spec.seed)
     # low buildings on both edges of the square
     for side in (0, 1):
         x = 0 if side == 0 else W - 120
         b = spec.buildings_left[0] if side == 0 else spec.buildings_right[0]
         top = horizon - 20 - b.floors * 12
-        draw.rectangle([x, top, x + 120, horizon], fill=_rgb(b.colour), outline=_shade(b.colour, 0.7))
+        draw.rectangle([x, top, x + 120, horizon], fill=rgb(b.colour), outline=shade(b.colour, 0.7))
         for f in range(b.floors):
             for c in range(5):
                 wx = x + 10 + c * 22
                 wy = horizon - 16 - (f + 1) * 12
-                draw.rectangle([wx, wy, wx + 8, wy + 7], fill=_shade(b.colour, 0.45))
+                draw.rectangle([wx, wy, wx + 8, wy + 7], fill=shade(b.colour, 0.45))
     draw_landmark(draw, spec.landmark.kind if spec.landmark else "", rng, horizon)
     for kind, _side, depth in spec.trees:
-        _tree(draw, kind, 30 + depth * 900 % (W - 60), horizon + 10, 0.55)
+        draw_tree(draw, kind, 30 + depth * 900 % (W - 60), horizon + 10, 0.55)
     for i, sign in enumerate(spec.shops):
         x0 = 8 if i == 0 else W - 128
         _sign_box(draw, (x0, horizon - 14, x0 + 120, horizon + 12), sign)
     for v in spec.vehicles:
         bottom = 392 if v.side == "near" else 350
         cx = 140 if v.side == "near" else 460
-        _car_side(draw, cx, bottom, 0.9 if v.side == "near" else 0.7, v)
+        car_side(draw, cx, bottom, 0.9 if v.side == "near" else 0.7, v)
     if spec.street_sign is not None:
         n = len(spec.street_sign.lines)
         _street_sign_box(draw, (W - 215, 262, W - 15, 262 + 22 * n + 10), spec.street_sign)
@@ -611,7 +426,4 @@ def render_view(spec: ViewSpec) -> Image.Image:
 
 @lru_cache(maxsize=256)
 def render_png(spec: ViewSpec) -> bytes:
-    buf = io.BytesIO()
-    # compress_level fixed and no metadata: identical bytes for identical pixels.
-    render_view(spec).save(buf, format="PNG", compress_level=6)
-    return buf.getvalue()
+    return encode_png(render_view(spec))

@@ -1,4 +1,4 @@
-"""Fonts for sign text in any script, with a deterministic Latin fallback.
+"""Fonts for sign text in any script (and the script of a text), with a deterministic Latin fallback.
 
 Fonts are looked up at fixed paths (Debian's fonts-dejavu-core, fonts-noto-core and
 fonts-noto-cjk), never through fontconfig, so the choice does not depend on a user's font
@@ -10,7 +10,6 @@ first by file name.
 
 from __future__ import annotations
 
-import unicodedata
 from functools import lru_cache
 from pathlib import Path
 
@@ -61,9 +60,8 @@ _RANGES: tuple[tuple[int, int, str], ...] = (
     (0xAC00, 0xD7AF, "korean"), (0x1100, 0x11FF, "korean"), (0x4E00, 0x9FFF, "han"), (0x3400, 0x4DBF, "han"),
 )
 
-# Characters that exist only in one of the two Han forms decide which face to use.
+# Characters that exist only in traditional Han decide the traditional face; any other Han text is simplified.
 _TRADITIONAL_ONLY = set("藥麵廳書飯銀彌臺灣東區點樓館們號")
-_SIMPLIFIED_ONLY = set("药面厅书饭银门东区点楼馆们号广")
 
 
 def script_of(text: str) -> str:
@@ -128,10 +126,6 @@ def drawable(native: str, latin: str) -> tuple[str, str]:
     if has_font(script):
         return native, script
     return latin, "latin"
-
-
-def strip_marks(text: str) -> str:
-    return "".join(c for c in unicodedata.normalize("NFKD", text) if not unicodedata.combining(c))
 
 
 def installed_scripts() -> dict[str, bool]:

@@ -6,20 +6,21 @@ landmarks are drawn by architectural style (columns, spires, stepped crowns, gla
 never with their names; shops carry sign boards with their names; tall landmarks rise on the
 skyline; intersections show street-name signs. Same scene -> same pixels.
 
-The drawing helpers (``Camera``, ``draw_facade``) take plain numbers so other renderers (the
-geolocation world) can reuse them.
+The camera, sky gradient, bundled font and PNG encoding come from the street-view toolkit
+(``ewa_mcp/street_drawing``), shared with the geolocation views; the facade patterns by
+architectural style and the details a place's description names are this world's own.
 """
 
 from __future__ import annotations
 
-import io
-import math
 import random
-from dataclasses import dataclass
-from functools import lru_cache
 
-from PIL import Image, ImageDraw, ImageFont
+from PIL import Image, ImageDraw
 
+from ..street_drawing.camera import Camera
+from ..street_drawing.png import encode_png
+from ..street_drawing.sky import sky_gradient
+from ..street_drawing.text import bundled_font
 from .scene import Frontage, Scene
 
 WIDTH, HEIGHT = 480, 330  # large enough for a lion by a door or a clock on a tower to read
@@ -70,27 +71,7 @@ def _style_key(style: str) -> str:
     return ""
 
 
-@lru_cache(maxsize=64)
-def font(size: int) -> ImageFont.FreeTypeFont | ImageFont.ImageFont:
-    # Pillow's bundled font: no system font needed, identical output on every machine.
-    return ImageFont.load_default(size=max(6, size))
-
-
-@dataclass
-class Camera:
-    width: int = WIDTH
-    height: int = HEIGHT
-    horizon: float = HEIGHT * 0.46
-
-    @property
-    def focal(self) -> float:
-        return self.width / 2.0  # 90 degree horizontal field of view
-
-    def project(self, x: float, y: float, z: float) -> tuple[float, float]:
-        """World metres (x right, y up from the ground, z ahead) to pixels."""
-        z = max(z, 0.5)
-        return (self.width / 2.0 + x * self.focal / z,
-                self.horizon + (CAMERA_HEIGHT_M - y) * self.focal / z)
+STREET_CAMERA = Camera(width=WIDTH, height=HEIGHT, horizon=HEIGHT * 0.46, eye_height=CAMERA_HEIGHT_M)  # metres
 
 
 def draw_facade(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], style: str, rng: random.Random,
@@ -260,18 +241,15 @@ def draw_details(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], hin
             draw.ellipse([x - unit * 1.8, y - unit * 5.5, x + unit * 1.8, y - unit * 2.0], fill=(60, 130, 60))
 
 
-def _sky_and_ground(img: Image.Image, draw: ImageDraw.ImageDraw, cam: Camera) -> None:
+def _sky_and_ground(draw: ImageDraw.ImageDraw, cam: Camera) -> None:
     h = int(cam.horizon)
-    for y in range(0, h + 1, 4):
-        t = y / max(1, h)
-        c = tuple(int(SKY_TOP[k] + (SKY[k] - SKY_TOP[k]) * t) for k in range(3))
-        draw.rectangle([0, y, cam.width, y + 4], fill=c)
+    sky_gradient(draw, cam.width, h, SKY_TOP, SKY, band=4)
     draw.rectangle([0, h, cam.width, cam.height], fill=SIDEWALK)
 
 
 def _skyline(draw: ImageDraw.ImageDraw, scene: Scene, cam: Camera) -> None:
     for item in scene.skyline:
-        x = cam.width / 2 + math.tan(math.radians(item.rel_angle)) * cam.focal
+        x = cam.screen_x(item.rel_angle)
         top = cam.horizon - min(cam.horizon - 4, item.height_m * cam.focal / item.distance_m)
         half = max(3.0, 40.0 * cam.focal / item.distance_m)
         key = _style_key(item.style)
@@ -310,7 +288,7 @@ def _draw_sign(draw: ImageDraw.ImageDraw, cam: Camera, side: str, z: float, text
     if size >= 7:
         cx = (p[0][0] + p[3][0]) / 2
         cy = (p[0][1] + p[1][1] + p[2][1] + p[3][1]) / 4
-        fnt = font(min(18, size))
+        fnt = bundled_font(min(18, size))
         w = draw.textlength(text, font=fnt)
         draw.text((cx - w / 2, cy - size / 2), text, font=fnt, fill=(250, 250, 250))
 
@@ -321,11 +299,11 @@ def _sign_colour(name: str) -> tuple[int, int, int]:
 
 
 def render(scene: Scene, cam: Camera | None = None) -> Image.Image:
-    cam = cam or Camera()
+    cam = cam or STREET_CAMERA
     rng = random.Random(scene.seed)
     img = Image.new("RGB", (cam.width, cam.height), SKY)
     draw = ImageDraw.Draw(img)
-    _sky_and_ground(img, draw, cam)
+    _sky_and_ground(draw, cam)
     _skyline(draw, scene, cam)
     end = scene.ahead_length_m if scene.road_ahead else 16.0
     end = max(end, 16.0)
@@ -390,7 +368,7 @@ def _end_wall(draw: ImageDraw.ImageDraw, cam: Camera, z: float, rng: random.Rand
 
 
 def _street_sign(draw: ImageDraw.ImageDraw, cam: Camera, names: list[str]) -> None:
-    fnt = font(10)
+    fnt = bundled_font(10)
     x, y = cam.width - 8, 10
     draw.line([(x - 4, y), (x - 4, cam.height * 0.9)], fill=(50, 60, 50), width=3)  # the pole
     for name in names[:3]:
@@ -401,8 +379,4 @@ def _street_sign(draw: ImageDraw.ImageDraw, cam: Camera, names: list[str]) -> No
 
 
 def render_png(scene: Scene, cam: Camera | None = None) -> bytes:
-    buf = io.BytesIO()
-    # A small adaptive palette keeps each view around 10-20 KB without visible banding.
-    render(scene, cam).quantize(colors=128, method=Image.Quantize.FASTOCTREE, dither=Image.Dither.NONE).save(
-        buf, format="PNG", optimize=False)
-    return buf.getvalue()
+    return encode_png(render(scene, cam), colours=128)

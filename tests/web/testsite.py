@@ -1,4 +1,4 @@
-"""A small fixture site that exercises every browser action; used by tests/web and benchmarks.
+"""A small fixture site that exercises every browser action; used by tests/web and benchmarks/bench_browser.py.
 
 It is served by the real ``SiteServer`` next to the homepage (``start_fixture_sites``) under
 the site name ``fixture``. Pages: a catalogue with a search form, a drop-down, a checkbox, a
@@ -18,8 +18,8 @@ from starlette.requests import Request
 from starlette.responses import HTMLResponse, JSONResponse, PlainTextResponse, RedirectResponse, Response
 from starlette.routing import Route
 
-from ..websites import serve
-from ..websites.common import SiteContext, episode_of
+from ewa_mcp.websites import serve
+from ewa_mcp.websites.common import SiteContext, episode_of
 
 ITEMS = {
     1: ("Tomato Bruschetta", "Toasted bread topped with chopped tomato, basil and olive oil."),
