@@ -35,6 +35,7 @@ from inspect_ai.solver import Generate, TaskState, solver
 from inspect_ai.tool import ToolDef, mcp_server_http, mcp_tools
 from mcp import Client
 
+from . import registry
 from .evaluation.llm import HIDDEN_TOOLS, NUDGE, SYSTEM_PROMPT
 from .evaluation.runner import EvalError, _free_port, select_tasks
 from .paths import TaskStoreMissing, check_task_dirs, runs_dir  # noqa: F401 (re-exported)
@@ -42,7 +43,7 @@ from .paths import tasks_dir as default_tasks_dir
 from .records import new_run_id
 from .taskmodel import TaskStore
 
-DOMAINS = ("cooking", "navigation", "shopping", "traveling", "geolocation")
+DOMAINS = tuple(registry.domain_names(scored_only=True))  # the suite task runs every scored domain
 GEO_LEVELS = ("continent", "country", "city", "street")
 
 

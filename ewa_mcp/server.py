@@ -88,7 +88,7 @@ def build_server(config: ServerConfig | None = None) -> tuple[MCPServer, Episode
 
     mcp = EpisodeServer("ewa-mcp", instructions=INSTRUCTIONS, version=__version__, lifespan=lifespan)
     mcp.episodes = episodes
-    for module_name in registry.TOOL_GROUPS:
+    for module_name in registry.tool_groups():
         importlib.import_module(module_name).register(mcp, episodes)
     make_portable(mcp)  # no $ref/$defs, closed argument objects: every client's converter accepts them
     return mcp, episodes

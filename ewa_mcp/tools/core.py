@@ -10,11 +10,13 @@ from mcp.server.mcpserver.exceptions import ResourceError
 from mcp_types import CallToolResult
 from pydantic import BaseModel, Field
 
+from .. import registry
 from ..environment import Observation
 from ..episodes import EpisodeError, EpisodeManager
 from ..options import EpisodeOptions
 from ..response import StepOutput, footer, step_result, tool_result
 
+DomainName = str  # replaced by a Literal of the registry's domain names in register()
 EpisodeId = Annotated[str, Field(description="the id start_episode returned", min_length=1, max_length=64)]
 
 
@@ -63,17 +65,13 @@ class EpisodeStatus(BaseModel):
 
 def public_task(task: Any) -> dict[str, Any]:
     """What an agent may see of a task: never its goals, answer or oracle (the reference leaked goals)."""
-    start = task.start
     return {
         "id": task.id,
         "domain": task.domain,
         "intent": task.intent,
         "step_limit": task.step_limit,
-        "start_environment": start.environment,
-        "environments": {
-            **({"web": "browser"} if start.web is not None or task.web_goals else {}),
-            **({"embodied": start.embodied.kind} if start.embodied is not None else {}),
-        },
+        "start_environment": task.start.environment,
+        "environments": task.environment_names(),
     }
 
 
@@ -94,9 +92,8 @@ async def _observe(episode: Any) -> Observation:
 
 
 def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
-    @mcp.tool(description="List benchmark tasks, optionally of one domain and difficulty (easy, medium, hard), a page at a time.")
     def list_tasks(
-        domain: Literal["cooking", "navigation", "shopping", "traveling", "geolocation", "demo"] | None = None,
+        domain: DomainName | None = None,
         difficulty: Literal["easy", "medium", "hard"] | None = None,
         limit: Annotated[int, Field(ge=1, le=500)] = 20,
         offset: Annotated[int, Field(ge=0, description="how many tasks to skip: 0-based position of the first "
@@ -120,6 +117,11 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         if nxt is not None:
             lines.append(f"(more: offset={nxt})")
         return tool_result(out, "\n".join(lines))
+
+    # The domain choices are the registry's (ewa_mcp/registry.py), read when the server is built.
+    list_tasks.__annotations__["domain"] = Literal[tuple(registry.domain_names())] | None  # type: ignore[valid-type]
+    mcp.tool(description="List benchmark tasks, optionally of one domain and difficulty (easy, medium, hard), a page "
+             "at a time.")(list_tasks)
 
     @mcp.tool(description="Start an episode of a task. Returns the episode_id to pass to every other tool.")
     async def start_episode(task_id: str, options: EpisodeOptions | None = None) -> Annotated[CallToolResult, EpisodeStarted]:
