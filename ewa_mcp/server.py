@@ -21,6 +21,7 @@ from .records import new_run_id
 from .schemas import make_portable
 from .services import Services
 from .taskmodel import TaskStore
+from .tools.adapter import check_declared
 
 log = logging.getLogger("ewa_mcp")
 
@@ -90,5 +91,6 @@ def build_server(config: ServerConfig | None = None) -> tuple[MCPServer, Episode
     mcp.episodes = episodes
     for module_name in registry.tool_groups():
         importlib.import_module(module_name).register(mcp, episodes)
+    check_declared(mcp)  # every tool has a title and annotations (ewa_mcp/tools/adapter.py)
     make_portable(mcp)  # no $ref/$defs, closed argument objects: every client's converter accepts them
     return mcp, episodes
