@@ -380,6 +380,11 @@ class KitchenSession:
             return None
         return best[2], best[3], best[4]
 
+    def plain_action(self, action: str) -> ActionReport:
+        """Any AI2-THOR action without an object (Pass, LookUp): step, report."""
+        self._step(action)
+        return self._report(action, None, [])
+
     def object_action(self, action: str, ref: str) -> ActionReport:
         """Any AI2-THOR action on one object in reach (OpenObject Fridge_1): resolve, step, report."""
         object_id, notes = self.resolve(ref, "interact")
