@@ -57,12 +57,21 @@ class GeoStart(_Strict):
 _BUILTIN_STARTS = {"kitchen", "street", "geo"}
 
 
+def _excluding(kinds: set[str]) -> Any:
+    """JSON Schema for the open model's ``kind``: any string but the built-in kinds (so oneOf stays exclusive)."""
+
+    def extra(schema: dict[str, Any]) -> None:
+        schema["not"] = {"enum": sorted(kinds)}
+
+    return extra
+
+
 class DomainStart(BaseModel):
     """The start of an embodied environment that a registered domain declares (ewa_mcp/registry.py) beside the
     built-in ones; its fields are that environment's to read."""
 
     model_config = ConfigDict(extra="allow")
-    kind: str = Field(json_schema_extra={"not": {"enum": sorted(_BUILTIN_STARTS)}})
+    kind: str = Field(json_schema_extra=_excluding(_BUILTIN_STARTS))
 
     @field_validator("kind")
     @classmethod
@@ -189,7 +198,7 @@ class DomainGoal(BaseModel):
     domain names for it (``Domain.checks``) against the embodied final state. Its fields are that check's."""
 
     model_config = ConfigDict(extra="allow")
-    kind: str = Field(json_schema_extra={"not": {"enum": sorted(_BUILTIN_EMBODIED_GOALS)}})
+    kind: str = Field(json_schema_extra=_excluding(_BUILTIN_EMBODIED_GOALS))
 
     @field_validator("kind")
     @classmethod

@@ -1,4 +1,4 @@
-"""The kitchen as an episode's embodied environment (``ENVIRONMENTS["kitchen"]``)."""
+"""The kitchen as an episode's embodied environment (the registry's ``KITCHEN`` environment, ewa_mcp/registry.py)."""
 
 from __future__ import annotations
 

@@ -27,7 +27,7 @@ from mcp_types import ToolAnnotations
 Effect = Literal["query", "look", "act", "destructive"]
 
 
-def annotations(effect: Effect) -> ToolAnnotations:
+def tool_annotations(effect: Effect) -> ToolAnnotations:
     if effect not in ("query", "look", "act", "destructive"):
         raise ValueError(f"unknown tool effect {effect!r}; use query, look, act or destructive")
     read_only = effect in ("query", "look")
@@ -44,7 +44,7 @@ def define_tool(mcp: MCPServer, *, title: str, effect: Effect, description: str,
     """``@define_tool(mcp, title=..., effect=..., description=...)`` in place of ``@mcp.tool(...)``."""
     if not title.strip():
         raise ValueError("a tool needs a title")
-    return mcp.tool(name=name, title=title, description=description, annotations=annotations(effect))
+    return mcp.tool(name=name, title=title, description=description, annotations=tool_annotations(effect))
 
 
 def check_declared(mcp: MCPServer) -> None:

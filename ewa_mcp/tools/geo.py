@@ -10,7 +10,7 @@ from mcp.server.mcpserver.exceptions import ToolError
 from mcp_types import CallToolResult
 from pydantic import BaseModel, Field
 
-from ..environment import EnvError, Observation
+from ..environment import EnvError
 from ..episodes import EpisodeManager
 from ..response import StepOutput, env_action, footer, tool_result
 from .adapter import define_tool

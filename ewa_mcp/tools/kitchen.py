@@ -18,15 +18,14 @@ from pydantic import Field
 
 from ..environment import EnvError, Environment, Observation
 from ..episodes import EpisodeError, EpisodeManager
-from ..indoor.actions import TABLE, KitchenAction, ObjectRef
+from ..indoor.actions import TABLE, KitchenAction
 from ..response import StepOutput, env_action
-from .adapter import define_tool
+from .adapter import Effect, define_tool
 from .core import EpisodeId
 
 if TYPE_CHECKING:  # imported on first use: the server starts without loading the simulator
     from ..indoor.env import KitchenEnvironment
 
-__all__ = ["ObjectRef", "register"]
 StepResult = Annotated[CallToolResult, StepOutput]
 
 
@@ -60,7 +59,7 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         return await env_action(episodes, episode_id, tool, args, "embodied", lambda env: fn(_kitchen(env)))
 
     for action in TABLE.tools():
-        effect = "look" if action.read_only else "destructive" if action.destructive else "act"
+        effect: Effect = "look" if action.read_only else "destructive" if action.destructive else "act"
         define_tool(mcp, name=action.tool_name, title=f"Kitchen: {action.title[0].lower()}{action.title[1:]}",
                     effect=effect, description=action.description)(_tool_function(action, act))
 

@@ -9,7 +9,7 @@ from mcp import Client
 from mcp.server.mcpserver import MCPServer
 
 from ewa_mcp.server import ServerConfig, build_server
-from ewa_mcp.tools.adapter import annotations, check_declared, define_tool
+from ewa_mcp.tools.adapter import check_declared, define_tool, tool_annotations
 
 LOOKS = {"get_observation", "street_observe", "geo_look", "browser_snapshot", "browser_screenshot",
          "episode_status", "list_tasks"}
@@ -66,4 +66,4 @@ def test_a_tool_declared_without_the_adapter_is_refused():
     with pytest.raises(RuntimeError, match="bare"):
         check_declared(mcp)
     with pytest.raises(ValueError, match="unknown tool effect"):
-        annotations("readonly")  # type: ignore[arg-type]
+        tool_annotations("readonly")  # type: ignore[arg-type]
