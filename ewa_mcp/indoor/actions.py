@@ -181,6 +181,18 @@ class KitchenActionTable:
         for alias in action.aliases:
             self.aliases.pop(alias, None)
 
+    def thor_for(self, name: str, args: dict[str, Any]) -> str:
+        """The AI2-THOR name of action ``name`` that these arguments select (move, direction=ahead -> MoveAhead)."""
+        action = self.by_name[name]
+        for thor, fixed in action.thor.items():
+            if all(args.get(key) == value for key, value in fixed.items()):
+                return thor
+        keys = sorted({key for fixed in action.thor.values() for key in fixed})
+        choices = ["/".join(str(fixed.get(k)) for k in keys) for fixed in action.thor.values()]
+        given = "/".join(repr(args.get(k))[:100] for k in keys)
+        listed = ", ".join(choices[:-1]) + f" or {choices[-1]}" if len(choices) > 1 else choices[0]
+        raise ValueError(f"unknown {'/'.join(keys)} {given} for {name}; use {listed}")
+
     def tools(self) -> list[KitchenAction]:
         return [a for a in self.by_name.values() if a.tool]
 

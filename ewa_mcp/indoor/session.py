@@ -306,26 +306,21 @@ class KitchenSession:
         report: ActionReport = action.run(self, **args)
         return report
 
+    def _thor(self, name: str, **args: Any) -> str:
+        """The AI2-THOR name the action table gives action ``name`` with these arguments."""
+        try:
+            return TABLE.thor_for(name, args)
+        except ValueError as exc:
+            raise KitchenActionError(str(exc)) from None
+
     def move(self, direction: str) -> ActionReport:
-        action = {"ahead": "MoveAhead", "back": "MoveBack", "left": "MoveLeft", "right": "MoveRight"}.get(direction)
-        if action is None:
-            raise KitchenActionError(f"unknown direction {direction!r}; use ahead, back, left or right")
-        self._step(action)
-        return self._report(action, None, [])
+        return self.plain_action(self._thor("move", direction=direction))
 
     def rotate(self, direction: str) -> ActionReport:
-        action = {"left": "RotateLeft", "right": "RotateRight"}.get(direction)
-        if action is None:
-            raise KitchenActionError(f"unknown direction {direction!r}; use left or right")
-        self._step(action)
-        return self._report(action, None, [])
+        return self.plain_action(self._thor("rotate", direction=direction))
 
     def look(self, direction: str) -> ActionReport:
-        action = {"up": "LookUp", "down": "LookDown"}.get(direction)
-        if action is None:
-            raise KitchenActionError(f"unknown direction {direction!r}; use up or down")
-        self._step(action)
-        return self._report(action, None, [])
+        return self.plain_action(self._thor("look", direction=direction))
 
     def teleport(self, ref: str) -> ActionReport:
         object_id, notes = self.resolve(ref, "teleport")
@@ -424,7 +419,7 @@ class KitchenSession:
         return self.object_action("BreakObject", ref)
 
     def toggle(self, ref: str, on: bool) -> ActionReport:
-        return self.object_action("ToggleObjectOn" if on else "ToggleObjectOff", ref)
+        return self.object_action(self._thor("toggle", state="on" if on else "off"), ref)
 
     # ------------------------------------------------------------------ deliveries
     def receive_deliveries(self, events: list[dict[str, Any]]) -> list[str]:
