@@ -70,3 +70,20 @@ def test_the_web_environment_rule_is_one_function():
                                 "web_goals": [{"kind": "page_visited", "site": "wiki", "path_prefix": "/"}]})
     assert task.environment_names() == {"web": "browser"}
     assert has_web_environment(None, []) is False and has_web_environment({"start_url": "home:/"}, []) is True
+
+
+def test_the_exported_schema_accepts_every_domains_tasks_and_keeps_kinds_exclusive(suite):
+    jsonschema = pytest.importorskip("jsonschema")
+    schema = export_json_schema()
+    jsonschema.Draft202012Validator.check_schema(schema)
+    validator = jsonschema.Draft202012Validator(schema)
+    firsts = {}
+    for task in suite:
+        firsts.setdefault(task.domain, task)
+    for task in firsts.values():
+        errors = list(validator.iter_errors(task.model_dump(mode="json")))
+        assert not errors, (task.id, errors[0].message[:200])
+    # A built-in kind with bad fields must not slip through as a registered domain's open kind.
+    bad = firsts["cooking"].model_dump(mode="json")
+    bad["start"]["embodied"] = {"kind": "kitchen", "scene": 3}
+    assert list(validator.iter_errors(bad))
