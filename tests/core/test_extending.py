@@ -46,6 +46,17 @@ def test_an_unregistered_domain_its_start_and_goal_kinds_are_refused():
         Task.model_validate(lamp_task(domain="demo"))
 
 
+def test_the_registration_line_loads_a_domain_package_on_first_use(monkeypatch):
+    from . import lamp_domain
+
+    monkeypatch.setattr(registry, "DOMAIN_PACKAGES", [f"{lamp_domain.__name__}:DOMAIN"])  # the one line
+    monkeypatch.setattr(registry, "_loaded", False)
+    monkeypatch.setattr(registry, "_registered", [])
+    assert registry.domain_names()[-1] == "lighting" and registry.goal_check("lamp_lit") is not None
+    assert Task.model_validate(lamp_task()).environment_names() == {"embodied": "lamp"}
+    assert "ewa_mcp.tools.browser" in registry.tool_groups() and registry.tool_groups()[-1].endswith(".tools")
+
+
 def test_a_registered_domain_validates_its_tasks_but_not_typos(lighting):
     Task.model_validate(lamp_task())
     with pytest.raises(ValueError, match="unknown embodied goal kind 'lamp_lt'"):
