@@ -120,7 +120,7 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         return tool_result(out, "\n".join(lines))
 
     # The domain choices are the registry's (ewa_mcp/registry.py), read when the server is built.
-    list_tasks.__annotations__["domain"] = Literal[tuple(registry.domain_names())] | None  # type: ignore[valid-type]
+    list_tasks.__annotations__["domain"] = Literal[tuple(registry.domain_names())] | None
     define_tool(mcp, title="List tasks", effect="query",
                 description="List benchmark tasks, optionally of one domain and difficulty (easy, medium, hard), a "
                 "page at a time.")(list_tasks)
