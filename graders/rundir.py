@@ -174,15 +174,15 @@ def task_view(raw: dict[str, Any], problems: list[str]) -> TaskView:
             answer = _ANSWER.validate_python(raw["answer"])
         except ValidationError as exc:
             answer_unreadable = f"answer check unreadable ({exc.errors()[0]['msg']})"
-    start = raw.get("start") if isinstance(raw.get("start"), dict) else {}
+    start = given if isinstance(given := raw.get("start"), dict) else {}
     embodied_start = start.get("embodied") if isinstance(start.get("embodied"), dict) else None
     return TaskView(
         id=raw.get("id") if isinstance(raw.get("id"), str) else None,
-        domain=raw.get("domain") if isinstance(raw.get("domain"), str) else "unknown",
+        domain=domain if isinstance(domain := raw.get("domain"), str) else "unknown",
         web_goals=web_goals,
         embodied_goals=embodied_goals,
         answer=answer,
-        metadata=raw.get("metadata") if isinstance(raw.get("metadata"), dict) else {},
+        metadata=metadata if isinstance(metadata := raw.get("metadata"), dict) else {},
         has_web_env=has_web_environment(start.get("web"), raw.get("web_goals") or []),
         has_embodied_env=embodied_start is not None,
         embodied_kind=embodied_start.get("kind") if embodied_start else None,
