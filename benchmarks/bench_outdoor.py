@@ -103,7 +103,7 @@ async def bench_mcp(world, n: int) -> dict[str, object]:
     from ewa_mcp import registry
     from ewa_mcp.server import ServerConfig, build_server
 
-    registry.TOOL_GROUPS = ["ewa_mcp.tools.core", "ewa_mcp.tools.street"]
+    registry.tool_groups = lambda: ["ewa_mcp.tools.core", "ewa_mcp.tools.street"]
     with tempfile.TemporaryDirectory() as tmp:
         tasks = Path(tmp) / "tasks"
         tasks.mkdir()

@@ -45,15 +45,6 @@ def quote(value: Any, limit: int = QUOTE_LIMIT) -> str:
     return f"{text[:limit]}… ({len(text)} characters)"
 
 
-# The tools that act in each environment, named in the refusal a tool of another domain gets.
-TOOLS_OF: dict[str, str] = {
-    "browser": "browser_* tools",
-    "kitchen": "kitchen_* tools",
-    "street": "street_* tools",
-    "geo": "geo_look, geo_move and submit_location",
-}
-
-
 @dataclass
 class Episode:
     id: str
@@ -132,16 +123,6 @@ def bounded_args(args: dict[str, Any]) -> dict[str, Any]:
     return out
 
 
-def environment_names_for(task: Task) -> dict[EnvKind, str]:
-    """Which environment implementations a task needs."""
-    names: dict[EnvKind, str] = {}
-    if task.start.web is not None or task.web_goals:
-        names["web"] = "browser"
-    if task.start.embodied is not None:
-        names["embodied"] = task.start.embodied.kind
-    return names
-
-
 class EpisodeManager:
     def __init__(
         self,
@@ -162,13 +143,13 @@ class EpisodeManager:
     def env_class(self, name: str) -> Any:
         if self._env_classes is not None and name in self._env_classes:
             return self._env_classes[name]
-        path = registry.ENVIRONMENTS.get(name)
-        if path is None:
+        spec = registry.environments().get(name)
+        if spec is None:
             raise EpisodeError(
                 f"environment {name!r} is not available in this build of ewa-mcp "
-                f"(available: {sorted(set(registry.ENVIRONMENTS) | set(self._env_classes or {}))})"
+                f"(available: {sorted(set(registry.environments()) | set(self._env_classes or {}))})"
             )
-        return registry.load_object(path)
+        return registry.load_object(spec.cls)
 
     async def start(self, task_id: str, options: dict[str, Any] | None = None) -> Episode:
         task = self.tasks.get(task_id)
@@ -178,7 +159,7 @@ class EpisodeManager:
             hint = f" Similar ids: {', '.join(close)}." if close else ""
             raise EpisodeError(f"unknown task id {quote(task_id)}; call list_tasks to see the ids.{hint}")
         options = dict(options or {})
-        needed = environment_names_for(task)
+        needed = task.environment_names()
         classes = {kind: self.env_class(name) for kind, name in needed.items()}  # fail before creating anything
         episode_id = "ep-" + uuid.uuid4().hex[:12]
         recorder = EpisodeRecorder(self.run_dir / episode_id)
@@ -222,7 +203,8 @@ class EpisodeManager:
         if requires in episode.environment_names.values():
             return
         have = sorted(set(episode.environment_names.values()))
-        use = "; ".join(f"{name}: {TOOLS_OF.get(name, name)}" for name in have) or "none"
+        specs = registry.environments()
+        use = "; ".join(f"{name}: {specs[name].hint() if name in specs else name}" for name in have) or "none"
         raise EpisodeError(
             f"{tool} works only in episodes with a {requires} environment; episode {episode.id} "
             f"(task {episode.task.id}, {episode.task.domain}) has {', '.join(have) or 'no environment'}. "

@@ -10,6 +10,7 @@ from typing import Any
 from mcp_types import CallToolResult, ImageContent, TextContent
 from pydantic import BaseModel, Field
 
+from . import registry
 from .environment import Environment, Observation
 
 
@@ -51,13 +52,11 @@ def step_result(episode: Any, observation: Observation, *, include_images: bool 
     return tool_result(model, text, observation.images if include_images else ())
 
 
-# Environment tools are named <prefix>_<action>; the prefix names the environment (its registry name)
-# the tool is made for, so a kitchen tool called on a street episode is refused before anything runs.
-TOOL_PREFIXES: dict[str, str] = {"browser": "browser", "kitchen": "kitchen", "street": "street", "geo": "geo"}
-
-
 def environment_for_tool(tool: str) -> str | None:
-    return TOOL_PREFIXES.get(tool.partition("_")[0])
+    """Environment tools are named <environment>_<action> after the registry name of the environment they are
+    made for (ewa_mcp/registry.py), so a kitchen tool called on a street episode is refused before anything runs."""
+    prefix = tool.partition("_")[0]
+    return prefix if prefix in registry.environments() else None
 
 
 async def env_action(

@@ -22,6 +22,7 @@ from .schemas import make_portable
 from .services import Services
 from .settings import Settings, load_settings
 from .taskmodel import TaskStore
+from .tools.adapter import check_declared
 
 log = logging.getLogger("ewa_mcp")
 
@@ -102,7 +103,8 @@ def build_server(config: ServerConfig | None = None) -> tuple[MCPServer, Episode
 
     mcp = EpisodeServer("ewa-mcp", instructions=INSTRUCTIONS, version=__version__, lifespan=lifespan)
     mcp.episodes = episodes
-    for module_name in registry.TOOL_GROUPS:
+    for module_name in registry.tool_groups():
         importlib.import_module(module_name).register(mcp, episodes)
+    check_declared(mcp)  # every tool has a title and annotations (ewa_mcp/tools/adapter.py)
     make_portable(mcp)  # no $ref/$defs, closed argument objects: every client's converter accepts them
     return mcp, episodes

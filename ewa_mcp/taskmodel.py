@@ -8,13 +8,17 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
+from collections.abc import Sized
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag, ValidationError, field_validator
+
+from . import registry
 
 SCHEMA_VERSION = 1
 
-Domain = Literal["cooking", "navigation", "shopping", "traveling", "geolocation", "demo"]
+# A task's domain is one of the registry's (ewa_mcp/registry.py); checked by Task, listed in the exported schema.
+Domain = str
 Difficulty = Literal["easy", "medium", "hard"]
 DIFFICULTIES: tuple[str, ...] = ("easy", "medium", "hard")
 EnvKind = Literal["web", "embodied"]
@@ -50,7 +54,53 @@ class GeoStart(_Strict):
     setting: Literal["baseline", "embodied"] = "embodied"
 
 
-EmbodiedStart = Annotated[KitchenStart | StreetStart | GeoStart, Field(discriminator="kind")]
+_BUILTIN_STARTS = {"kitchen", "street", "geo"}
+
+
+def _excluding(kinds: set[str]) -> Any:
+    """JSON Schema for the open model's ``kind``: any string but the built-in kinds (so oneOf stays exclusive)."""
+
+    def extra(schema: dict[str, Any]) -> None:
+        schema["not"] = {"enum": sorted(kinds)}
+
+    return extra
+
+
+class DomainStart(BaseModel):
+    """The start of an embodied environment that a registered domain declares (ewa_mcp/registry.py) beside the
+    built-in ones; its fields are that environment's to read."""
+
+    model_config = ConfigDict(extra="allow")
+    kind: str = Field(json_schema_extra=_excluding(_BUILTIN_STARTS))
+
+    @field_validator("kind")
+    @classmethod
+    def _registered(cls, kind: str) -> str:
+        names = sorted(n for n, e in registry.environments().items() if e.kind == "embodied")
+        if kind in _BUILTIN_STARTS or kind not in names:
+            raise ValueError(f"unknown embodied environment {kind[:100]!r}; the embodied environments are: "
+                             f"{', '.join(names)}")
+        return kind
+
+
+def _kind_tag(builtin: set[str], other: str) -> Any:
+    """A discriminator: the built-in model of the value's ``kind``, else the open model of registered kinds."""
+
+    def tag(value: Any) -> str | None:
+        kind = value.get("kind") if isinstance(value, dict) else getattr(value, "kind", None)
+        if not isinstance(kind, str):
+            return None
+        return kind if kind in builtin else other
+
+    return Discriminator(tag, custom_error_type="invalid_kind",
+                         custom_error_message="the object needs a 'kind' naming a known kind")
+
+
+EmbodiedStart = Annotated[
+    Annotated[KitchenStart, Tag("kitchen")] | Annotated[StreetStart, Tag("street")] | Annotated[GeoStart, Tag("geo")]
+    | Annotated[DomainStart, Tag("other")],
+    _kind_tag(_BUILTIN_STARTS, "other"),
+]
 
 
 class StartState(_Strict):
@@ -140,8 +190,32 @@ class PassedPlace(_StreetTarget):
     kind: Literal["passed_place"] = "passed_place"
 
 
+_BUILTIN_EMBODIED_GOALS = {"object_state", "object_in", "reached_place", "passed_place"}
+
+
+class DomainGoal(BaseModel):
+    """Embodied: a goal kind a registered domain declares (``Domain.goal_kinds``), graded by the check that
+    domain names for it (``Domain.checks``) against the embodied final state. Its fields are that check's."""
+
+    model_config = ConfigDict(extra="allow")
+    kind: str = Field(json_schema_extra=_excluding(_BUILTIN_EMBODIED_GOALS))
+
+    @field_validator("kind")
+    @classmethod
+    def _registered(cls, kind: str) -> str:
+        if kind in _BUILTIN_EMBODIED_GOALS or registry.goal_check(kind) is None:
+            known = sorted(_BUILTIN_EMBODIED_GOALS | {k for d in registry.domains() for k in d.checks})
+            raise ValueError(f"unknown embodied goal kind {kind[:100]!r}; the kinds are: {', '.join(known)}")
+        return kind
+
+
 WebGoal = Annotated[RecipeCompleted | OrderPlaced | DirectionsShown | PageVisited, Field(discriminator="kind")]
-EmbodiedGoal = Annotated[ObjectState | ObjectIn | ReachedPlace | PassedPlace, Field(discriminator="kind")]
+EmbodiedGoal = Annotated[
+    Annotated[ObjectState, Tag("object_state")] | Annotated[ObjectIn, Tag("object_in")]
+    | Annotated[ReachedPlace, Tag("reached_place")] | Annotated[PassedPlace, Tag("passed_place")]
+    | Annotated[DomainGoal, Tag("other")],
+    _kind_tag(_BUILTIN_EMBODIED_GOALS, "other"),
+]
 
 
 # ---------------------------------------------------------------- answers
@@ -216,6 +290,33 @@ class Task(_Strict):
     oracle: list[ToolCall] = Field(default_factory=list)
     metadata: dict[str, Any] = Field(default_factory=dict)
 
+    @field_validator("domain")
+    @classmethod
+    def _known_domain(cls, domain: str) -> str:
+        names = registry.domain_names()
+        if domain not in names:
+            raise ValueError(f"unknown domain {domain[:100]!r}; the domains are: {', '.join(names)} "
+                             "(ewa_mcp/registry.py)")
+        return domain
+
+    def environment_names(self) -> dict[EnvKind, str]:
+        """Which environment implementations the task's episodes hold: slot (web/embodied) -> registry name."""
+        names: dict[EnvKind, str] = {}
+        if has_web_environment(self.start.web, self.web_goals):
+            names["web"] = WEB_ENVIRONMENT
+        if self.start.embodied is not None:
+            names["embodied"] = self.start.embodied.kind
+        return names
+
+
+WEB_ENVIRONMENT = "browser"  # the registry name of the one web environment
+
+
+def has_web_environment(web_start: object | None, web_goals: Sized) -> bool:
+    """The rule: a task has a web environment if it sets start.web or has web goals (also read by the graders
+    from a task.json that fails the schema)."""
+    return web_start is not None or len(web_goals) > 0
+
 
 class TaskFileError(ValueError):
     """A task file that cannot be loaded; the message names the file, the field and the fix."""
@@ -282,5 +383,6 @@ class TaskStore:
 
 def export_json_schema() -> dict[str, Any]:
     schema = Task.model_json_schema()
+    schema["properties"]["domain"] = {"enum": registry.domain_names(), "title": "Domain", "type": "string"}
     schema["$id"] = f"https://ewa-mcp.invalid/task.schema.v{SCHEMA_VERSION}.json"
     return schema

@@ -9,7 +9,17 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from ewa_mcp.taskmodel import GeoAnswer, ObjectIn, ObjectState, OrderPlaced, PassedPlace, ReachedPlace, TextAnswer
+from ewa_mcp import registry
+from ewa_mcp.taskmodel import (
+    DomainGoal,
+    GeoAnswer,
+    ObjectIn,
+    ObjectState,
+    OrderPlaced,
+    PassedPlace,
+    ReachedPlace,
+    TextAnswer,
+)
 
 from . import kitchen, street, web
 from .answers import check_geo_answer, check_text_answer
@@ -87,7 +97,21 @@ def _embodied_conditions(
             navigation.append(nav)
         elif isinstance(goal, PassedPlace):
             conditions.append(street.check_passed_place(goal, state, radius_m))
+        elif isinstance(goal, DomainGoal):
+            conditions.append(_domain_check(goal, state))
     return conditions, navigation
+
+
+def _domain_check(goal: DomainGoal, state: dict[str, Any]) -> ConditionResult:
+    """A goal kind a registered domain declares, graded by the check it names (ewa_mcp/registry.py)."""
+    path = registry.goal_check(goal.kind)
+    if path is None:  # the task validated when the domain was registered; this grader process lacks it
+        return ConditionResult(side="embodied", kind=goal.kind, description=goal.kind, met=None,
+                               note=f"no registered domain checks goal kind {goal.kind!r}")
+    result = registry.load_object(path)(goal, state)
+    if not isinstance(result, ConditionResult):
+        raise TypeError(f"the check {path} returned {type(result).__name__}, not a ConditionResult")
+    return result
 
 
 def _orders_for_pickup(task: TaskView, events: list[dict[str, Any]]) -> list[dict[str, Any]]:

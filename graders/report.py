@@ -5,12 +5,13 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from ewa_mcp import registry
+
 from .aggregate import domain_aggregate, error_breakdown
 from .episode import grade_episode
 from .models import EpisodeResult, ErrorClassification, RunReport
 from .rundir import EPISODE_FILES, episode_dirs
 
-DOMAIN_ORDER = ("navigation", "shopping", "traveling", "cooking", "geolocation")
 DIFFICULTY_ORDER = ("easy", "medium", "hard")
 
 
@@ -19,7 +20,15 @@ class RunDirError(ValueError):
 
 
 def _domain_key(domain: str) -> tuple[int, str]:
-    return (DOMAIN_ORDER.index(domain) if domain in DOMAIN_ORDER else len(DOMAIN_ORDER), domain)
+    """Report order: the registry's display order (ewa_mcp/registry.py), unknown domains last by name."""
+    order = registry.domain_names()
+    return (order.index(domain) if domain in order else len(order), domain)
+
+
+def _scored(domain: str) -> bool:
+    """Whether a domain's episodes count in the run's aggregates (the demo does not; unknown domains do)."""
+    declared = registry.domain(domain)
+    return declared is None or declared.scored
 
 
 def grade_run(run_dir: str | Path, radius_m: float | None = None, label: str | None = None) -> RunReport:
@@ -41,10 +50,10 @@ def grade_run(run_dir: str | Path, radius_m: float | None = None, label: str | N
             else f"{root} is an episode directory; pass its parent (the run directory), or use grade_episode"
         )
     episodes = [_grade_safely(d, radius_m) for d in dirs]
-    domains = sorted({e.domain for e in episodes if e.domain != "demo"}, key=_domain_key)
+    scored = [e for e in episodes if _scored(e.domain)]
+    domains = sorted({e.domain for e in scored}, key=_domain_key)
     by_domain = {d: [e for e in episodes if e.domain == d] for d in domains}
     demo = [e for e in episodes if e.domain == "demo"]
-    scored = [e for e in episodes if e.domain != "demo"]
     errors = {d: error_breakdown(eps) for d, eps in by_domain.items()}
     errors["all"] = error_breakdown(scored)
     problems = [f"{e.episode_id}: {p}" for e in episodes for p in e.problems]

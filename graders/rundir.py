@@ -14,7 +14,7 @@ from typing import Any
 from pydantic import TypeAdapter, ValidationError
 
 from ewa_mcp.records import FinalState, TrajectoryLine, WebEvent, record_problem
-from ewa_mcp.taskmodel import SCHEMA_VERSION, AnswerCheck, EmbodiedGoal, Task, WebGoal
+from ewa_mcp.taskmodel import SCHEMA_VERSION, AnswerCheck, EmbodiedGoal, Task, WebGoal, has_web_environment
 
 EPISODE_FILES = ("task.json", "trajectory.jsonl", "web_events.jsonl", "final_state.json")
 
@@ -159,7 +159,7 @@ def task_view(raw: dict[str, Any], problems: list[str]) -> TaskView:
             embodied_goals=list(task.embodied_goals),
             answer=task.answer,
             metadata=dict(task.metadata),
-            has_web_env=task.start.web is not None or bool(task.web_goals),
+            has_web_env="web" in task.environment_names(),
             has_embodied_env=embodied is not None,
             embodied_kind=embodied.kind if embodied is not None else None,
             start_setting=getattr(embodied, "setting", None),
@@ -183,7 +183,7 @@ def task_view(raw: dict[str, Any], problems: list[str]) -> TaskView:
         embodied_goals=embodied_goals,
         answer=answer,
         metadata=metadata if isinstance(metadata := raw.get("metadata"), dict) else {},
-        has_web_env=start.get("web") is not None or bool(raw.get("web_goals")),
+        has_web_env=has_web_environment(start.get("web"), raw.get("web_goals") or []),
         has_embodied_env=embodied_start is not None,
         embodied_kind=embodied_start.get("kind") if embodied_start else None,
         start_setting=embodied_start.get("setting") if embodied_start else None,

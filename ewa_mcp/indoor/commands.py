@@ -1,41 +1,15 @@
-"""Parsing actions written the paper's way: ``"PickupObject Apple"``, ``"Teleport [Pan]"``, ``"MoveAhead"``."""
+"""Parsing actions written the paper's way: ``"PickupObject Apple"``, ``"Teleport [Pan]"``, ``"MoveAhead"``.
+
+The names and short forms come from the kitchen action table (actions.py).
+"""
 
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from typing import Any
 
-# AI2-THOR action name -> (session verb, needs an object)
-ACTIONS: dict[str, tuple[str, bool]] = {
-    "Teleport": ("teleport", True),
-    "MoveAhead": ("move:ahead", False),
-    "MoveBack": ("move:back", False),
-    "MoveLeft": ("move:left", False),
-    "MoveRight": ("move:right", False),
-    "RotateLeft": ("rotate:left", False),
-    "RotateRight": ("rotate:right", False),
-    "LookUp": ("look:up", False),
-    "LookDown": ("look:down", False),
-    "PickupObject": ("pickup", True),
-    "PutObject": ("put", True),
-    "DropHandObject": ("drop", False),
-    "OpenObject": ("open", True),
-    "CloseObject": ("close", True),
-    "SliceObject": ("slice", True),
-    "CookObject": ("cook", True),
-    "BreakObject": ("break", True),
-    "ToggleObjectOn": ("toggle:on", True),
-    "ToggleObjectOff": ("toggle:off", True),
-}
-# Short forms agents often write; each maps to one AI2-THOR action.
-ALIASES: dict[str, str] = {
-    "teleportobject": "Teleport", "navigateto": "Teleport", "goto": "Teleport",
-    "pickup": "PickupObject", "pick": "PickupObject", "put": "PutObject", "place": "PutObject",
-    "drop": "DropHandObject", "open": "OpenObject", "close": "CloseObject", "slice": "SliceObject",
-    "cut": "SliceObject", "crack": "SliceObject", "cook": "CookObject", "break": "BreakObject",
-    "toggleon": "ToggleObjectOn", "toggleoff": "ToggleObjectOff", "turnon": "ToggleObjectOn",
-    "turnoff": "ToggleObjectOff",
-}
+from .actions import TABLE, KitchenAction
 
 
 class CommandError(ValueError):
@@ -44,12 +18,18 @@ class CommandError(ValueError):
 
 @dataclass(frozen=True)
 class Command:
-    action: str  # AI2-THOR name
-    verb: str  # session verb (teleport, pickup, move:ahead, ...)
-    target: str | None
+    action: str  # AI2-THOR name (PickupObject)
+    kitchen_action: KitchenAction  # its entry in the table
+    target: str | None  # the object named, if any
+    args: dict[str, Any] = field(default_factory=dict)  # the parameters for KitchenAction.run
 
 
 _PATTERN = re.compile(r"^\s*([A-Za-z_]+)\s*(?:[\[(]\s*(.*?)\s*[\])]|\s+(.+?))?\s*$")
+
+
+def _thor_name(name: str) -> str | None:
+    exact = next((a for a in TABLE.by_thor if a.lower() == name.lower()), None)
+    return exact or TABLE.aliases.get(name.lower().replace("_", ""))
 
 
 def parse_command(text: str) -> Command:
@@ -61,14 +41,18 @@ def parse_command(text: str) -> Command:
         )
     name, bracketed, plain = match.group(1), match.group(2), match.group(3)
     target = (bracketed if bracketed is not None else plain) or None
-    action = next((a for a in ACTIONS if a.lower() == name.lower()), None) or ALIASES.get(name.lower().replace("_", ""))
-    if action is None:
-        raise CommandError(f"unknown action {name!r}; the actions are: {', '.join(ACTIONS)}")
-    verb, needs_object = ACTIONS[action]
-    if needs_object and not target:
+    thor = _thor_name(name)
+    if thor is None:
+        raise CommandError(f"unknown action {name!r}; the actions are: {', '.join(TABLE.thor_names())}")
+    action = TABLE.by_thor[thor]
+    if action.target is not None and not target:
         raise CommandError(
-            f"{action} needs an object, e.g. '{action} Apple' (a type, a handle like Apple_1, or an objectId)"
+            f"{thor} needs an object, e.g. '{thor} Apple' (a type, a handle like Apple_1, or an objectId)"
         )
-    if not needs_object and target:
-        raise CommandError(f"{action} takes no object; write just '{action}'")
-    return Command(action=action, verb=verb, target=target.strip().strip("'\"") if target else None)
+    if action.target is None and target:
+        raise CommandError(f"{thor} takes no object; write just '{thor}'")
+    target = target.strip().strip("'\"") if target else None
+    args = dict(action.thor[thor])
+    if action.target is not None:
+        args[action.target] = target
+    return Command(action=thor, kitchen_action=action, target=target, args=args)

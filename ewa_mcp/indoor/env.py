@@ -1,4 +1,4 @@
-"""The kitchen as an episode's embodied environment (``ENVIRONMENTS["kitchen"]``)."""
+"""The kitchen as an episode's embodied environment (the registry's ``KITCHEN`` environment, ewa_mcp/registry.py)."""
 
 from __future__ import annotations
 
@@ -109,39 +109,11 @@ class KitchenEnvironment(Environment):
         await self._run(step)
         return self._observation()
 
-    # ------------------------------------------------------------------ actions (one per kitchen tool)
-    async def teleport(self, ref: str) -> Observation:
-        return await self._act(lambda s: s.teleport(ref))
-
-    async def move(self, direction: str) -> Observation:
-        return await self._act(lambda s: s.move(direction))
-
-    async def rotate(self, direction: str) -> Observation:
-        return await self._act(lambda s: s.rotate(direction))
-
-    async def pickup(self, ref: str) -> Observation:
-        return await self._act(lambda s: s.pickup(ref))
-
-    async def put(self, ref: str) -> Observation:
-        return await self._act(lambda s: s.put(ref))
-
-    async def drop(self) -> Observation:
-        return await self._act(lambda s: s.drop())
-
-    async def open(self, ref: str) -> Observation:
-        return await self._act(lambda s: s.open(ref))
-
-    async def close_object(self, ref: str) -> Observation:
-        return await self._act(lambda s: s.close(ref))
-
-    async def slice(self, ref: str) -> Observation:
-        return await self._act(lambda s: s.slice(ref))
-
-    async def cook(self, ref: str) -> Observation:
-        return await self._act(lambda s: s.cook(ref))
-
-    async def toggle(self, ref: str, on: bool) -> Observation:
-        return await self._act(lambda s: s.toggle(ref, on))
+    # ------------------------------------------------------------------ actions (the table in actions.py)
+    async def perform(self, name: str, args: dict[str, Any]) -> Observation:
+        """One action of the kitchen action table, e.g. perform("slice", {"object": "Tomato"})."""
+        return await self._act(lambda s: s.perform(name, args))
 
     async def run(self, action: str) -> Observation:
+        """One action written the AI2-THOR way ("SliceObject Tomato")."""
         return await self._act(lambda s: s.run(action))

@@ -26,6 +26,7 @@ from dataclasses import dataclass, field
 from typing import Any, Protocol
 
 from ..environment import EnvError
+from .actions import TABLE
 from .commands import Command, parse_command
 from .vocabulary import (
     DELIVERABLE_TYPES,
@@ -289,46 +290,37 @@ class KitchenSession:
 
     # ------------------------------------------------------------------ agent actions
     def run(self, command: Command | str) -> ActionReport:
-        """Perform one action written the AI2-THOR way (``PickupObject Apple``)."""
+        """Perform one action written the AI2-THOR way (``PickupObject Apple``), as the action table says."""
         if isinstance(command, str):
             try:
                 command = parse_command(command)
             except ValueError as exc:
                 raise KitchenActionError(str(exc)) from None
-        verb, _, arg = command.verb.partition(":")
-        if verb == "move":
-            return self.move(arg)
-        if verb == "rotate":
-            return self.rotate(arg)
-        if verb == "look":
-            return self.look(arg)
-        if verb == "drop":
-            return self.drop()
-        if verb == "toggle":
-            return self.toggle(command.target or "", arg == "on")
-        assert command.target is not None
-        return getattr(self, verb)(command.target)
+        return self.perform(command.kitchen_action.name, command.args)
+
+    def perform(self, name: str, args: dict[str, Any]) -> ActionReport:
+        """Perform the table's action ``name`` (actions.py) with its parameters."""
+        action = TABLE.by_name.get(name)
+        if action is None:
+            raise KitchenActionError(f"unknown kitchen action {name!r}; the actions are: {', '.join(TABLE.by_name)}")
+        report: ActionReport = action.run(self, **args)
+        return report
+
+    def _thor(self, name: str, **args: Any) -> str:
+        """The AI2-THOR name the action table gives action ``name`` with these arguments."""
+        try:
+            return TABLE.thor_for(name, args)
+        except ValueError as exc:
+            raise KitchenActionError(str(exc)) from None
 
     def move(self, direction: str) -> ActionReport:
-        action = {"ahead": "MoveAhead", "back": "MoveBack", "left": "MoveLeft", "right": "MoveRight"}.get(direction)
-        if action is None:
-            raise KitchenActionError(f"unknown direction {direction!r}; use ahead, back, left or right")
-        self._step(action)
-        return self._report(action, None, [])
+        return self.plain_action(self._thor("move", direction=direction))
 
     def rotate(self, direction: str) -> ActionReport:
-        action = {"left": "RotateLeft", "right": "RotateRight"}.get(direction)
-        if action is None:
-            raise KitchenActionError(f"unknown direction {direction!r}; use left or right")
-        self._step(action)
-        return self._report(action, None, [])
+        return self.plain_action(self._thor("rotate", direction=direction))
 
     def look(self, direction: str) -> ActionReport:
-        action = {"up": "LookUp", "down": "LookDown"}.get(direction)
-        if action is None:
-            raise KitchenActionError(f"unknown direction {direction!r}; use up or down")
-        self._step(action)
-        return self._report(action, None, [])
+        return self.plain_action(self._thor("look", direction=direction))
 
     def teleport(self, ref: str) -> ActionReport:
         object_id, notes = self.resolve(ref, "teleport")
@@ -383,18 +375,24 @@ class KitchenSession:
             return None
         return best[2], best[3], best[4]
 
-    def _object_action(self, action: str, ref: str) -> ActionReport:
+    def plain_action(self, action: str) -> ActionReport:
+        """Any AI2-THOR action without an object (Pass, LookUp): step, report."""
+        self._step(action)
+        return self._report(action, None, [])
+
+    def object_action(self, action: str, ref: str) -> ActionReport:
+        """Any AI2-THOR action on one object in reach (OpenObject Fridge_1): resolve, step, report."""
         object_id, notes = self.resolve(ref, "interact")
         self._step(action, object_id)
         return self._report(action, object_id, notes)
 
     def pickup(self, ref: str) -> ActionReport:
-        return self._object_action("PickupObject", ref)
+        return self.object_action("PickupObject", ref)
 
     def put(self, ref: str) -> ActionReport:
         if self.held_id is None:
             raise KitchenActionError("PutObject failed: nothing is in your hand; pick something up first")
-        return self._object_action("PutObject", ref)
+        return self.object_action("PutObject", ref)
 
     def drop(self) -> ActionReport:
         held = self.held_id
@@ -406,22 +404,22 @@ class KitchenSession:
         return self._report("DropHandObject", held, notes)
 
     def open(self, ref: str) -> ActionReport:
-        return self._object_action("OpenObject", ref)
+        return self.object_action("OpenObject", ref)
 
     def close(self, ref: str) -> ActionReport:
-        return self._object_action("CloseObject", ref)
+        return self.object_action("CloseObject", ref)
 
     def slice(self, ref: str) -> ActionReport:
-        return self._object_action("SliceObject", ref)
+        return self.object_action("SliceObject", ref)
 
     def cook(self, ref: str) -> ActionReport:
-        return self._object_action("CookObject", ref)
+        return self.object_action("CookObject", ref)
 
     def break_(self, ref: str) -> ActionReport:
-        return self._object_action("BreakObject", ref)
+        return self.object_action("BreakObject", ref)
 
     def toggle(self, ref: str, on: bool) -> ActionReport:
-        return self._object_action("ToggleObjectOn" if on else "ToggleObjectOff", ref)
+        return self.object_action(self._thor("toggle", state="on" if on else "off"), ref)
 
     # ------------------------------------------------------------------ deliveries
     def receive_deliveries(self, events: list[dict[str, Any]]) -> list[str]:

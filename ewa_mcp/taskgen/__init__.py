@@ -1,25 +1,26 @@
 """Deterministic task-suite generation (``ewa-mcp tasks generate``).
 
-Each domain module exposes ``generate() -> list[Task]``: seeded, validated (a task whose goals
-cannot be reached is not returned), with an oracle solution made of real tool calls. This
-module writes them under ``tasks/<domain>/`` in chunks, replacing what was there.
+Each domain names its generator in the registry (ewa_mcp/registry.py): ``Domain.generator``, a function
+``generate() -> list[Task]`` (seeded, validated: a task whose goals cannot be reached is not returned, with
+an oracle solution made of real tool calls), whose tasks this module writes under ``tasks/<domain>/`` in
+chunks, replacing what was there; or ``Domain.writer``, a function ``(out_dir) -> int`` that writes its own
+files (geolocation keeps one file per setting).
 """
 
 from __future__ import annotations
 
-import importlib
 import json
 from pathlib import Path
 
+from .. import registry
 from ..taskmodel import Task
 
-GENERATORS: dict[str, str] = {
-    "cooking": "ewa_mcp.taskgen.cooking:generate",
-    "navigation": "ewa_mcp.taskgen.navigation:generate",
-    "shopping": "ewa_mcp.taskgen.shopping:generate",
-    "traveling": "ewa_mcp.taskgen.traveling:generate",
-}
 CHUNK = 100
+
+
+def generated_domains() -> list[str]:
+    """The domains that have a generator, in the registry's order."""
+    return [d.name for d in registry.domains() if d.generator or d.writer]
 
 
 def write_tasks(out_dir: Path, domain: str, tasks: list[Task]) -> int:
@@ -35,21 +36,22 @@ def write_tasks(out_dir: Path, domain: str, tasks: list[Task]) -> int:
     return len(tasks)
 
 
-def generate_all(out_dir: Path, domains: list[str] | None = None) -> dict[str, int]:
-    counts: dict[str, int] = {}
-    wanted = domains or [*GENERATORS, "geolocation"]
-    for domain in wanted:
-        if domain == "geolocation":
-            from ..geo.generate import generate_tasks
+def generate_domain(out_dir: Path, domain: str) -> int:
+    declared = registry.domain(domain)
+    if declared is None or not (declared.generator or declared.writer):
+        raise ValueError(f"unknown domain {domain!r}; choose from {sorted(generated_domains())}")
+    if declared.writer:
+        return int(registry.load_object(declared.writer)(out_dir / domain))
+    assert declared.generator is not None
+    tasks = registry.load_object(declared.generator)()
+    ids = [t.id for t in tasks]
+    if len(ids) != len(set(ids)):
+        raise ValueError(f"{domain}: the generator produced duplicate task ids")
+    wrong = sorted({t.domain for t in tasks} - {domain})
+    if wrong:
+        raise ValueError(f"{domain}: the generator produced tasks of another domain ({', '.join(wrong)})")
+    return write_tasks(out_dir, domain, tasks)
 
-            counts[domain] = generate_tasks(out_dir / "geolocation")
-            continue
-        if domain not in GENERATORS:
-            raise ValueError(f"unknown domain {domain!r}; choose from {sorted([*GENERATORS, 'geolocation'])}")
-        module_name, _, attr = GENERATORS[domain].partition(":")
-        tasks = getattr(importlib.import_module(module_name), attr)()
-        ids = [t.id for t in tasks]
-        if len(ids) != len(set(ids)):
-            raise ValueError(f"{domain}: the generator produced duplicate task ids")
-        counts[domain] = write_tasks(out_dir, domain, tasks)
-    return counts
+
+def generate_all(out_dir: Path, domains: list[str] | None = None) -> dict[str, int]:
+    return {domain: generate_domain(out_dir, domain) for domain in domains or generated_domains()}

@@ -12,12 +12,13 @@ from collections.abc import Awaitable, Callable
 from typing import Annotated, Any, Literal
 
 from mcp.server.mcpserver import MCPServer
-from mcp_types import CallToolResult, ToolAnnotations
+from mcp_types import CallToolResult
 from pydantic import Field
 
 from ..environment import EnvError, Observation
 from ..episodes import EpisodeManager
 from ..response import StepOutput, env_action
+from .adapter import define_tool
 from .core import EpisodeId
 
 Element = Annotated[
@@ -43,8 +44,6 @@ Result = Annotated[CallToolResult, StepOutput]
 OBSERVES = (" Returns the page afterwards as the episode's observation mode shows it: text mode the accessibility "
             "tree; vision mode a Set-of-Marks screenshot plus the list of its marked elements; both mode the tree "
             "and the screenshot.")
-READ_ONLY = ToolAnnotations(read_only_hint=True, open_world_hint=False)
-ACTION = ToolAnnotations(read_only_hint=False, destructive_hint=False, open_world_hint=False)
 
 
 def _method(name: str, *args: Any, **kwargs: Any) -> Callable[[Any], Awaitable[Observation]]:
@@ -62,14 +61,17 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
                   **call_kwargs: Any) -> CallToolResult:
         return await env_action(episodes, episode_id, tool, args, "web", _method(method, *call_args, **call_kwargs))
 
-    @mcp.tool(description="Click an element of the current page." + OBSERVES, annotations=ACTION)
+    @define_tool(
+        mcp, title="Click an element", effect="destructive",
+        description="Click an element of the current page." + OBSERVES,
+    )
     async def browser_click(episode_id: EpisodeId, element: Element) -> Result:
         return await act(episode_id, "browser_click", {"element": element}, "click", element)
 
-    @mcp.tool(
+    @define_tool(
+        mcp, title="Type text", effect="destructive",
         description="Type text into a text field (replacing its content), optionally pressing Enter after. "
-        "For a drop-down (combobox), the text chooses the option with that label." + OBSERVES,
-        annotations=ACTION,
+        "For a drop-down (combobox), the text chooses the option with that label." + OBSERVES
     )
     async def browser_type(
         episode_id: EpisodeId,
@@ -80,52 +82,77 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         args = {"element": element, "text": text, "press_enter": press_enter}
         return await act(episode_id, "browser_type", args, "type", element, text, press_enter)
 
-    @mcp.tool(description="Move the mouse over an element (opens hover menus)." + OBSERVES, annotations=ACTION)
+    @define_tool(
+        mcp, title="Hover over an element", effect="act",
+        description="Move the mouse over an element (opens hover menus)." + OBSERVES,
+    )
     async def browser_hover(episode_id: EpisodeId, element: Element) -> Result:
         return await act(episode_id, "browser_hover", {"element": element}, "hover", element)
 
-    @mcp.tool(description="Press a key or key combination on the focused element, e.g. Enter, Tab, ArrowDown, "
-              "Escape, Control+a." + OBSERVES, annotations=ACTION)
+    @define_tool(
+        mcp, title="Press keys", effect="destructive",
+        description="Press a key or key combination on the focused element, e.g. Enter, Tab, ArrowDown, "
+        "Escape, Control+a." + OBSERVES,
+    )
     async def browser_press(
         episode_id: EpisodeId, keys: Annotated[str, Field(min_length=1, max_length=100)]
     ) -> Result:
         return await act(episode_id, "browser_press", {"keys": keys}, "press", keys)
 
-    @mcp.tool(description="Scroll the page by most of a screen in a direction." + OBSERVES, annotations=ACTION)
+    @define_tool(
+        mcp, title="Scroll the page", effect="act",
+        description="Scroll the page by most of a screen in a direction." + OBSERVES,
+    )
     async def browser_scroll(episode_id: EpisodeId, direction: Literal["up", "down", "left", "right"]) -> Result:
         return await act(episode_id, "browser_scroll", {"direction": direction}, "scroll", direction)
 
-    @mcp.tool(description="Open a new tab (blank, or at a URL of an embedded site) and make it current." + OBSERVES,
-              annotations=ACTION)
+    @define_tool(
+        mcp, title="Open a new tab", effect="act",
+        description="Open a new tab (blank, or at a URL of an embedded site) and make it current." + OBSERVES,
+    )
     async def browser_new_tab(episode_id: EpisodeId, url: Url | None = None) -> Result:
         return await act(episode_id, "browser_new_tab", {"url": url}, "new_tab", url)
 
-    @mcp.tool(description="Close the current tab; the tab to its left becomes current." + OBSERVES, annotations=ACTION)
+    @define_tool(
+        mcp, title="Close the current tab", effect="act",
+        description="Close the current tab; the tab to its left becomes current." + OBSERVES,
+    )
     async def browser_close_tab(episode_id: EpisodeId) -> Result:
         return await act(episode_id, "browser_close_tab", {}, "close_tab")
 
-    @mcp.tool(description="Make the tab with this index (from the observation's tab list, 0-based) current." + OBSERVES,
-              annotations=ACTION)
+    @define_tool(
+        mcp, title="Switch to a tab", effect="act",
+        description="Make the tab with this index (from the observation's tab list, 0-based) current." + OBSERVES,
+    )
     async def browser_tab_focus(episode_id: EpisodeId, index: Annotated[int, Field(ge=0, le=100)]) -> Result:
         return await act(episode_id, "browser_tab_focus", {"index": index}, "tab_focus", index)
 
-    @mcp.tool(description="Open a URL of an embedded site in the current tab." + OBSERVES, annotations=ACTION)
+    @define_tool(
+        mcp, title="Go to a URL", effect="act",
+        description="Open a URL of an embedded site in the current tab." + OBSERVES,
+    )
     async def browser_goto(episode_id: EpisodeId, url: Url) -> Result:
         return await act(episode_id, "browser_goto", {"url": url}, "goto", url)
 
-    @mcp.tool(description="Go back to the previous page of the current tab." + OBSERVES, annotations=ACTION)
+    @define_tool(
+        mcp, title="Go back", effect="act",
+        description="Go back to the previous page of the current tab." + OBSERVES,
+    )
     async def browser_go_back(episode_id: EpisodeId) -> Result:
         return await act(episode_id, "browser_go_back", {}, "go_back")
 
-    @mcp.tool(description="Go forward to the next page of the current tab (after going back)." + OBSERVES, annotations=ACTION)
+    @define_tool(
+        mcp, title="Go forward", effect="act",
+        description="Go forward to the next page of the current tab (after going back)." + OBSERVES,
+    )
     async def browser_go_forward(episode_id: EpisodeId) -> Result:
         return await act(episode_id, "browser_go_forward", {}, "go_forward")
 
-    @mcp.tool(
+    @define_tool(
+        mcp, title="Page snapshot (accessibility tree)", effect="look",
         description="The current page's accessibility tree as text, without acting (it counts as a step, like every "
         "call). It is always the tree and never an image, whatever the observation mode (browser_screenshot gives "
-        "the image). viewport_only limits it to what is on screen; max_chars sets the size budget.",
-        annotations=READ_ONLY,
+        "the image). viewport_only limits it to what is on screen; max_chars sets the size budget."
     )
     async def browser_snapshot(
         episode_id: EpisodeId,
@@ -135,12 +162,12 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         args = {"viewport_only": viewport_only, "max_chars": max_chars}
         return await act(episode_id, "browser_snapshot", args, "snapshot", viewport_only, max_chars)
 
-    @mcp.tool(
+    @define_tool(
+        mcp, title="Page screenshot", effect="look",
         description="A screenshot of the current tab's viewport with each interactive element boxed and labelled by "
         "its id (Set-of-Marks), plus the list of marked elements as text; it counts as a step, like every call. It "
         "is always the image and never the accessibility tree, whatever the observation mode (browser_snapshot "
-        "gives the tree).",
-        annotations=READ_ONLY,
+        "gives the tree)."
     )
     async def browser_screenshot(episode_id: EpisodeId) -> Result:
         return await act(episode_id, "browser_screenshot", {}, "screenshot")

@@ -10,11 +10,14 @@ from mcp.server.mcpserver.exceptions import ResourceError
 from mcp_types import CallToolResult
 from pydantic import BaseModel, Field
 
+from .. import registry
 from ..environment import Observation
 from ..episodes import EpisodeError, EpisodeManager
 from ..options import EpisodeOptions
 from ..response import StepOutput, footer, step_result, tool_result
+from .adapter import define_tool
 
+DomainName = str  # replaced by a Literal of the registry's domain names in register()
 EpisodeId = Annotated[str, Field(description="the id start_episode returned", min_length=1, max_length=64)]
 
 
@@ -63,17 +66,13 @@ class EpisodeStatus(BaseModel):
 
 def public_task(task: Any) -> dict[str, Any]:
     """What an agent may see of a task: never its goals, answer or oracle (the reference leaked goals)."""
-    start = task.start
     return {
         "id": task.id,
         "domain": task.domain,
         "intent": task.intent,
         "step_limit": task.step_limit,
-        "start_environment": start.environment,
-        "environments": {
-            **({"web": "browser"} if start.web is not None or task.web_goals else {}),
-            **({"embodied": start.embodied.kind} if start.embodied is not None else {}),
-        },
+        "start_environment": task.start.environment,
+        "environments": task.environment_names(),
     }
 
 
@@ -94,9 +93,8 @@ async def _observe(episode: Any) -> Observation:
 
 
 def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
-    @mcp.tool(description="List benchmark tasks, optionally of one domain and difficulty (easy, medium, hard), a page at a time.")
     def list_tasks(
-        domain: Literal["cooking", "navigation", "shopping", "traveling", "geolocation", "demo"] | None = None,
+        domain: DomainName | None = None,
         difficulty: Literal["easy", "medium", "hard"] | None = None,
         limit: Annotated[int, Field(ge=1, le=500)] = 20,
         offset: Annotated[int, Field(ge=0, description="how many tasks to skip: 0-based position of the first "
@@ -121,7 +119,14 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
             lines.append(f"(more: offset={nxt})")
         return tool_result(out, "\n".join(lines))
 
-    @mcp.tool(description="Start an episode of a task. Returns the episode_id to pass to every other tool.")
+    # The domain choices are the registry's (ewa_mcp/registry.py), read when the server is built.
+    list_tasks.__annotations__["domain"] = Literal[tuple(registry.domain_names())] | None
+    define_tool(mcp, title="List tasks", effect="query",
+                description="List benchmark tasks, optionally of one domain and difficulty (easy, medium, hard), a "
+                "page at a time.")(list_tasks)
+
+    @define_tool(mcp, title="Start an episode", effect="act",
+                 description="Start an episode of a task. Returns the episode_id to pass to every other tool.")
     async def start_episode(task_id: str, options: EpisodeOptions | None = None) -> Annotated[CallToolResult, EpisodeStarted]:
         opts = (options or EpisodeOptions()).model_dump(exclude_none=True)
         episode = await episodes.start(task_id, opts)
@@ -145,12 +150,14 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         )
         return tool_result(out, text, observation.images)
 
-    @mcp.tool(description="Show the active environment's observation again (counts as a step, like every call).")
+    @define_tool(mcp, title="Observe the active environment", effect="look",
+                 description="Show the active environment's observation again (counts as a step, like every call).")
     async def get_observation(episode_id: EpisodeId) -> Annotated[CallToolResult, StepOutput]:
         episode, observation = await episodes.act(episode_id, "get_observation", {}, _observe, environment=None)
         return step_result(episode, observation)
 
-    @mcp.tool(description="Switch the active environment (web <-> embodied). Say in message what you will do there.")
+    @define_tool(mcp, title="Switch environment", effect="act",
+                 description="Switch the active environment (web <-> embodied). Say in message what you will do there.")
     async def switch_environment(
         episode_id: EpisodeId,
         target: Literal["web", "embodied"],
@@ -159,7 +166,7 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         episode, observation = await episodes.switch(episode_id, target, message)
         return step_result(episode, observation)
 
-    @mcp.tool(description=(
+    @define_tool(mcp, title="Finish the episode", effect="destructive", description=(
         "End the episode, with your answer when the task asks a question. Nothing can be done after it. Where a "
         "task involves a walk, the walk ends at your first street_stop or, without one, here: where you stand "
         "now is graded. Geolocation tasks end with submit_location instead."))
@@ -169,7 +176,7 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         episode = await episodes.finish(episode_id, answer)
         return tool_result(EpisodeStatus(**episode.summary()), f"Episode {episode.id} finished. {footer(episode)}")
 
-    @mcp.tool(description=(
+    @define_tool(mcp, title="Episode status", effect="look", description=(
         "The episode's status: active environment, steps used and left, whether the walk is stopped (tasks with "
         "a walk), whether the episode ended. On a running episode it counts as a step, like every call."))
     async def episode_status(episode_id: EpisodeId) -> Annotated[CallToolResult, EpisodeStatus]:

@@ -13,6 +13,7 @@ from pydantic import BaseModel, Field
 from ..environment import EnvError
 from ..episodes import EpisodeManager
 from ..response import StepOutput, env_action, footer, tool_result
+from .adapter import define_tool
 
 if TYPE_CHECKING:  # imported on first use: the server starts without loading the gazetteer
     from ..geo.env import GeoEnvironment
@@ -59,7 +60,7 @@ def validate_submission(lat: float, lng: float, continent: str | None, country: 
 
 
 def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
-    @mcp.tool(description=(
+    @define_tool(mcp, title="Geolocation: look around", effect="look", description=(
         "Geolocation: look around from the current standpoint. direction='all' shows every view the setting "
         "allows (embodied: north, east, south, west; baseline: north only) and the neighbouring standpoints with "
         "absolute and relative heading and distance; a single direction also turns you to face it. Views come "
@@ -71,7 +72,7 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         return await env_action(episodes, episode_id, "geo_look", {"direction": direction}, "embodied",
                                 lambda env: _geo(env).look(direction))
 
-    @mcp.tool(description=(
+    @define_tool(mcp, title="Geolocation: walk to a neighbouring standpoint", effect="act", description=(
         "Geolocation (embodied setting): walk to an adjacent standpoint: direction forward/left/right/back "
         "(relative to where you face) or north/east/south/west, or neighbour = a neighbour id from the "
         "observation (e.g. 'p1'). You then face the way you walked; returns the views from there."))
@@ -84,7 +85,7 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         return await env_action(episodes, episode_id, "geo_move", args, "embodied",
                                 lambda env: _geo(env).move(direction=direction, neighbour=neighbour))
 
-    @mcp.tool(description=(
+    @define_tool(mcp, title="Geolocation: submit the location", effect="destructive", description=(
         "Geolocation: submit where you are and end the episode. lat/lng in decimal degrees (required); "
         "continent, country, city and street as names (optional but each is scored). Invalid values are "
         "refused with the valid form and the episode stays open."))

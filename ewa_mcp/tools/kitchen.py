@@ -1,4 +1,5 @@
-"""Kitchen tools: one MCP tool per AI2-THOR action, plus kitchen_action for AI2-THOR-style strings.
+"""Kitchen tools: one MCP tool per entry of the kitchen action table (ewa_mcp/indoor/actions.py), plus
+kitchen_action for AI2-THOR-style strings.
 
 Every tool goes through ``env_action(..., "embodied", ...)``, so the episode manager refuses it
 while the web environment is active and records it in the trajectory.
@@ -6,8 +7,9 @@ while the web environment is active and records it in the trajectory.
 
 from __future__ import annotations
 
+import inspect
 from collections.abc import Awaitable, Callable
-from typing import TYPE_CHECKING, Annotated, Any, Literal
+from typing import TYPE_CHECKING, Annotated, Any
 
 from mcp.server.mcpserver import MCPServer
 from mcp.server.mcpserver.exceptions import ResourceError
@@ -16,21 +18,14 @@ from pydantic import Field
 
 from ..environment import EnvError, Environment, Observation
 from ..episodes import EpisodeError, EpisodeManager
+from ..indoor.actions import TABLE, KitchenAction
 from ..response import StepOutput, env_action
+from .adapter import Effect, define_tool
+from .core import EpisodeId
 
 if TYPE_CHECKING:  # imported on first use: the server starts without loading the simulator
     from ..indoor.env import KitchenEnvironment
-from .core import EpisodeId
 
-ObjectRef = Annotated[
-    str,
-    Field(
-        min_length=1,
-        max_length=200,
-        description="the object: a handle from the observation (Apple_1, Cabinet_3), an objectId, or a type "
-        "(Apple; exact AI2-THOR types only — Egg is not Eggplant)",
-    ),
-]
 StepResult = Annotated[CallToolResult, StepOutput]
 
 
@@ -43,64 +38,34 @@ def _kitchen(env: Environment) -> KitchenEnvironment:
     return env
 
 
+def _tool_function(action: KitchenAction,
+                   act: Callable[..., Awaitable[CallToolResult]]) -> Callable[..., Awaitable[CallToolResult]]:
+    """The tool's function: ``(episode_id, <the action's parameters>)``, with a signature the SDK reads."""
+
+    async def tool(episode_id: str, **args: Any) -> CallToolResult:
+        return await act(episode_id, action.tool_name, args, lambda k: k.perform(action.name, args))
+
+    params = [inspect.Parameter("episode_id", inspect.Parameter.POSITIONAL_OR_KEYWORD, annotation=EpisodeId)]
+    params += [inspect.Parameter(name, inspect.Parameter.KEYWORD_ONLY, annotation=kind)
+               for name, kind in action.params.items()]
+    tool.__signature__ = inspect.Signature(params, return_annotation=StepResult)  # type: ignore[attr-defined]
+    tool.__name__ = tool.__qualname__ = action.tool_name
+    return tool
+
+
 def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
     async def act(episode_id: str, tool: str, args: dict[str, Any],
                   fn: Callable[[KitchenEnvironment], Awaitable[Observation]]) -> CallToolResult:
         return await env_action(episodes, episode_id, tool, args, "embodied", lambda env: fn(_kitchen(env)))
 
-    @mcp.tool(description="Teleport [object]: stand at the nearest spot facing the object, within reach "
-                          "(if it is inside a closed receptacle you face that receptacle).")
-    async def kitchen_teleport(episode_id: EpisodeId, object: ObjectRef) -> StepResult:
-        return await act(episode_id, "kitchen_teleport", {"object": object}, lambda k: k.teleport(object))
+    for action in TABLE.tools():
+        effect: Effect = "look" if action.read_only else "destructive" if action.destructive else "act"
+        define_tool(mcp, name=action.tool_name, title=f"Kitchen: {action.title[0].lower()}{action.title[1:]}",
+                    effect=effect, description=action.description)(_tool_function(action, act))
 
-    @mcp.tool(description="MoveAhead/MoveBack/MoveLeft/MoveRight: step 0.25 m (blocked by furniture).")
-    async def kitchen_move(episode_id: EpisodeId, direction: Literal["ahead", "back", "left", "right"]) -> StepResult:
-        return await act(episode_id, "kitchen_move", {"direction": direction}, lambda k: k.move(direction))
-
-    @mcp.tool(description="RotateLeft/RotateRight: turn 90 degrees.")
-    async def kitchen_rotate(episode_id: EpisodeId, direction: Literal["left", "right"]) -> StepResult:
-        return await act(episode_id, "kitchen_rotate", {"direction": direction}, lambda k: k.rotate(direction))
-
-    @mcp.tool(description="PickupObject [object]: take an object in reach into your (empty) hand.")
-    async def kitchen_pickup(episode_id: EpisodeId, object: ObjectRef) -> StepResult:
-        return await act(episode_id, "kitchen_pickup", {"object": object}, lambda k: k.pickup(object))
-
-    @mcp.tool(description="PutObject [receptacle]: put what you hold in/on a receptacle in reach "
-                          "(open it first if it is closed).")
-    async def kitchen_put(episode_id: EpisodeId, receptacle: ObjectRef) -> StepResult:
-        return await act(episode_id, "kitchen_put", {"receptacle": receptacle}, lambda k: k.put(receptacle))
-
-    @mcp.tool(description="DropHandObject: let go of what you hold (it lands on the surface ahead or the floor).")
-    async def kitchen_drop(episode_id: EpisodeId) -> StepResult:
-        return await act(episode_id, "kitchen_drop", {}, lambda k: k.drop())
-
-    @mcp.tool(description="OpenObject [object]: open a fridge, cabinet, drawer or microwave in reach.")
-    async def kitchen_open(episode_id: EpisodeId, object: ObjectRef) -> StepResult:
-        return await act(episode_id, "kitchen_open", {"object": object}, lambda k: k.open(object))
-
-    @mcp.tool(description="CloseObject [object]: close an open fridge, cabinet, drawer or microwave in reach.")
-    async def kitchen_close(episode_id: EpisodeId, object: ObjectRef) -> StepResult:
-        return await act(episode_id, "kitchen_close", {"object": object}, lambda k: k.close_object(object))
-
-    @mcp.tool(description="SliceObject [object]: slice food in reach while holding a Knife or ButterKnife "
-                          "(an Egg cracks into EggCracked).")
-    async def kitchen_slice(episode_id: EpisodeId, object: ObjectRef) -> StepResult:
-        return await act(episode_id, "kitchen_slice", {"object": object}, lambda k: k.slice(object))
-
-    @mcp.tool(description="CookObject [object]: cook food in reach at once (AI2-THOR's instant cook). Food also "
-                          "cooks in a Pan/Pot on a burner whose StoveKnob is on, in a running Microwave, or as "
-                          "BreadSliced in a running Toaster.")
-    async def kitchen_cook(episode_id: EpisodeId, object: ObjectRef) -> StepResult:
-        return await act(episode_id, "kitchen_cook", {"object": object}, lambda k: k.cook(object))
-
-    @mcp.tool(description="ToggleObjectOn/Off [object]: switch a StoveKnob (lights its burner), Microwave, "
-                          "Toaster or CoffeeMachine in reach.")
-    async def kitchen_toggle(episode_id: EpisodeId, object: ObjectRef, state: Literal["on", "off"]) -> StepResult:
-        return await act(episode_id, "kitchen_toggle", {"object": object, "state": state},
-                         lambda k: k.toggle(object, state == "on"))
-
-    @mcp.tool(description="Any kitchen action written the AI2-THOR way, e.g. 'PickupObject Apple', "
-                          "'Teleport [Pan]', 'MoveAhead', 'ToggleObjectOn StoveKnob_1'.")
+    @define_tool(mcp, title="Kitchen: any AI2-THOR action", effect="destructive",
+                 description="Any kitchen action written the AI2-THOR way, e.g. 'PickupObject Apple', "
+                             "'Teleport [Pan]', 'MoveAhead', 'ToggleObjectOn StoveKnob_1'.")
     async def kitchen_action(
         episode_id: EpisodeId,
         action: Annotated[str, Field(min_length=1, max_length=300, description="e.g. 'SliceObject Tomato'")],

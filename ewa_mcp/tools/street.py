@@ -12,6 +12,7 @@ from pydantic import Field
 from ..environment import EnvError, Observation
 from ..episodes import EpisodeManager
 from ..response import StepOutput, env_action
+from .adapter import define_tool
 
 if TYPE_CHECKING:  # imported on first use: the server starts without loading street graphs
     from ..outdoor.env import StreetEnvironment
@@ -33,7 +34,7 @@ def _street(env: object) -> StreetEnvironment:
 
 
 def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
-    @mcp.tool(description=(
+    @define_tool(mcp, title="Look around in the street", effect="look", description=(
         "Look around in the street: your street and heading, the neighbouring panorama nodes (each with a "
         "direction label that is unique here, absolute and relative heading, distance, street name), what is right "
         "here, and a description of four views (front/right/back/left, or north/east/south/west with "
@@ -48,7 +49,7 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
 
         return await env_action(episodes, episode_id, "street_observe", {"frame": frame}, "embodied", act)
 
-    @mcp.tool(description=(
+    @define_tool(mcp, title="Walk to a neighbouring node", effect="act", description=(
         "Walk to a neighbouring node: direction = one of the labels street_observe lists here (forward, "
         "forward-right, right, back-right, back, back-left, left, forward-left; relative to your heading), or "
         "neighbour = one of the neighbour node ids. A plain forward/right/back/left also works when exactly one "
@@ -66,7 +67,7 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
 
         return await env_action(episodes, episode_id, "street_move", args, "embodied", act)
 
-    @mcp.tool(description=(
+    @define_tool(mcp, title="End the walk here", effect="destructive", description=(
         "End the walk here: where you stand now is where the walk ended, and that is what is graded (without a "
         "stop, the walk ends where you are when the episode finishes). After this, moves are refused; call "
         "finish_episode to end the episode."))

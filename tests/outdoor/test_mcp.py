@@ -12,7 +12,7 @@ from ewa_mcp.server import ServerConfig, build_server
 @pytest.fixture
 def street_only(monkeypatch):
     # Only the groups this part needs, so the test does not depend on the browser/kitchen parts.
-    monkeypatch.setattr(registry, "TOOL_GROUPS", ["ewa_mcp.tools.core", "ewa_mcp.tools.street"])
+    monkeypatch.setattr(registry, "tool_groups", lambda: ["ewa_mcp.tools.core", "ewa_mcp.tools.street"])
 
 
 def write_task(tmp_path, world):
