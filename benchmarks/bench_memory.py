@@ -22,7 +22,7 @@ Open episodes are read twice: 3 s after the last one opened (``just_opened``) an
 time to see every page quiet for a whole period.
 
     .venv/bin/python benchmarks/bench_memory.py [--counts 1,16,64] [--open-concurrency 8] [--idle-s S]
-        [--idle-wait-s 25]
+        [--idle-wait-s 25] [--idle-gc-s 0]
 
 Prints one JSON object; the load average is read at the start and the end of each count.
 """
@@ -180,7 +180,9 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
     tmp = Path(tempfile.mkdtemp(prefix="ewa-bench-memory-"))
     (tmp / "tasks").mkdir()
     (tmp / "tasks" / "bench.json").write_text(json.dumps(TASK))
-    mcp, episodes = build_server(ServerConfig(task_dirs=[tmp / "tasks"], run_dir=tmp / "runs"))
+    browser = {} if args.idle_gc_s is None else {"idle_gc_s": args.idle_gc_s}
+    mcp, episodes = build_server(ServerConfig(task_dirs=[tmp / "tasks"], run_dir=tmp / "runs",
+                                              services={"browser": browser}))
     report: dict[str, Any] = {"benchmark": "memory of idle web episodes", "counts": {}}
     async with Client(mcp) as client:
         # Launch the browser (and the sites) with one episode, then empty the pool: the baseline is a
@@ -240,6 +242,8 @@ def main() -> None:
     parser.add_argument("--counts", default="1,16,64", help="comma-separated episode counts (default 1,16,64)")
     parser.add_argument("--open-concurrency", type=int, default=8, help="start_episode calls in flight at once")
     parser.add_argument("--idle-s", type=float, default=None, help="the pool's idle period (default: its own)")
+    parser.add_argument("--idle-gc-s", type=float, default=None,
+                        help="the idle collector's period (default: the browser config's; 0 turns it off, as before)")
     parser.add_argument("--idle-wait-s", type=float, default=25.0,
                         help="how long the open episodes idle before the reading (default 25: two idle-GC periods)")
     args = parser.parse_args()
