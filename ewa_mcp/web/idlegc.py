@@ -1,12 +1,12 @@
 """Garbage collection in the renderers of pages that have gone quiet.
 
 Why: an episode's renderer is most of what an open web episode costs in memory, and after a few
-page loads and accessibility snapshots about a quarter of it is garbage that V8 keeps: an idle
-page allocates nothing more, so no collection is ever triggered, and headless Chromium sends its
-renderers no memory-pressure signal (``Memory.simulatePressureNotification`` changes nothing here).
-A full collection (``HeapProfiler.collectGarbage``, which also returns V8's pooled pages and
-shrinks its young generation) takes a renderer on the recipes index from ~40 to ~31 MB PSS
-(docs/performance.md, benchmarks/bench_memory.py).
+page loads and accessibility snapshots about a quarter of it is garbage that V8 frees late or not
+at all: an idle page allocates nothing more, so nothing triggers a collection (V8's memory reducer
+frees part of it after a while, not always), and headless Chromium sends its renderers no
+memory-pressure signal (``Memory.simulatePressureNotification`` changes nothing here). A full
+collection of V8's and Blink's heaps (``HeapProfiler.collectGarbage``) took renderers that had
+loaded three recipe pages from ~40 to ~31 MB PSS (docs/performance.md, benchmarks/bench_memory.py).
 
 How: every ``every_s`` seconds the sweeper reads each page's JavaScript heap
 (``Runtime.getHeapUsage``, which allocates nothing on the page). A page whose heap has not
