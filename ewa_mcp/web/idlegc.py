@@ -18,12 +18,14 @@ collected in the middle of its work, and an idle page costs one cheap call per p
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import weakref
 from collections.abc import Callable
 from typing import Any
 
 EVERY_S = 10.0
 QUIET_BYTES = 64 * 1024  # a heap that moved less than this between two sweeps is idle
+PAGE_TIMEOUT_S = 2.0  # a page whose main thread is busy this long is skipped, not waited for
 
 
 class _PageRecord:
@@ -73,9 +75,12 @@ class IdleCollector:
                 if page.is_closed():
                     continue
                 try:
-                    collected += await self._visit(context, page)
-                except Exception:
-                    self._pages.pop(page, None)  # closed or crashed meanwhile: a new session next time
+                    collected += await asyncio.wait_for(self._visit(context, page), PAGE_TIMEOUT_S)
+                except Exception:  # closed, crashed or busy: a new session next time
+                    record = self._pages.pop(page, None)
+                    if record is not None:
+                        with contextlib.suppress(Exception):
+                            await asyncio.wait_for(record.session.detach(), PAGE_TIMEOUT_S)
         return collected
 
     async def _visit(self, context: Any, page: Any) -> int:
