@@ -10,7 +10,7 @@ from pydantic import ValidationError
 from ewa_mcp.web.config import BrowserConfig
 from ewa_mcp.web.idlegc import IdleCollector
 
-from .helpers import open_env
+from .helpers import crash_tab, open_env
 
 pytestmark = [pytest.mark.anyio, pytest.mark.browser]
 
@@ -18,15 +18,23 @@ pytestmark = [pytest.mark.anyio, pytest.mark.browser]
 MAKE_GARBAGE = "() => { let a = []; for (let i = 0; i < 400; i++) a.push(new Array(5000).fill(i)); return a.length; }"
 
 
+@pytest.fixture
+async def quiet_service(web_services):
+    """The browser service with its own sweeper stopped: it would move the heaps between a test's sweeps."""
+    service = web_services.peek("chromium")
+    await service.browser()
+    await service.collector.stop()
+    yield service
+    service.collector.start(service.current_browser)
+
+
 async def heap_used(env, session=None) -> float:
     session = session or await env.context.new_cdp_session(env.tabs[0].page)
     return float((await session.send("Runtime.getHeapUsage"))["usedSize"])
 
 
-async def test_a_quiet_page_is_collected_once_and_a_busy_one_is_left_alone(web_services):
-    service = web_services.peek("chromium")
-    browser = await service.browser()
-    await service.collector.stop()  # the service's own sweeper would move the heap between the sweeps below
+async def test_a_quiet_page_is_collected_once_and_a_busy_one_is_left_alone(web_services, quiet_service):
+    browser = await quiet_service.browser()
     collector = IdleCollector(every_s=0)  # swept by hand here: no timer
     env = await open_env(web_services, "fixture:/", episode_id="ep-gc-a")
     try:
@@ -53,7 +61,6 @@ async def test_a_quiet_page_is_collected_once_and_a_busy_one_is_left_alone(web_s
     finally:
         await env.close()
         await collector.stop()
-        service.collector.start(service.current_browser)
 
 
 async def test_the_service_collects_quiet_pages_by_itself(web_services):
@@ -72,6 +79,23 @@ async def test_the_service_collects_quiet_pages_by_itself(web_services):
         await collector.stop()
         await env.close()
     assert collector._task is None and not collector._pages
+
+
+async def test_a_crashed_page_does_not_stop_the_sweep(web_services, quiet_service):
+    browser = await quiet_service.browser()
+    collector = IdleCollector(every_s=0)
+    crashed = await open_env(web_services, "fixture:/item/1", episode_id="ep-gc-crash")
+    fine = await open_env(web_services, "fixture:/item/2", episode_id="ep-gc-fine")
+    try:
+        await collector.sweep(browser)
+        await crash_tab(crashed, crashed.tabs[0])
+        await collector.sweep(browser)  # the crashed page's calls fail; the other page is still swept
+        assert collector._pages[fine.tabs[0].page].collected_at is not None
+        assert crashed.tabs[0].page not in collector._pages
+    finally:
+        await crashed.close()
+        await fine.close()
+        await collector.stop()
 
 
 def test_memory_settings_are_checked():
