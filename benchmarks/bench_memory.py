@@ -17,12 +17,15 @@ Then the N episodes are finished (the pool keeps up to ``max_idle`` warm context
 resident memory is read right after the burst and again once the pool has been idle past its idle
 period (``--idle-s``; by default the pool's own setting).
 
+With ``--browse`` each episode first loads three recipe pages (a search, a click on a result, a step
+page), as an agent would before pausing to think; without it they idle on their start page.
+
 Open episodes are read twice: 3 s after the last one opened (``just_opened``) and after idling
 ``--idle-wait-s`` seconds (the main figures), which gives the idle collector (ewa_mcp/web/idlegc.py)
 time to see every page quiet for a whole period.
 
     .venv/bin/python benchmarks/bench_memory.py [--counts 1,16,64] [--open-concurrency 8] [--idle-s S]
-        [--idle-wait-s 25] [--idle-gc-s 0]
+        [--idle-wait-s 25] [--idle-gc-s 0] [--browse]
 
 Prints one JSON object; the load average is read at the start and the end of each count.
 """
@@ -131,7 +134,14 @@ def loadavg() -> list[float]:
 
 
 # ------------------------------------------------------------------ episodes
-async def open_episodes(client: Client, n: int, concurrency: int) -> tuple[list[str], list[str]]:
+# With --browse, what each episode does after its start, before idling (a cooking task's first steps).
+BROWSE = (("browser_goto", {"url": "recipes:/?q=Egg+Bhurji+Toast&difficulty=simple"}),
+          ("browser_click", {"element": "link 'Egg Bhurji Toast'"}),
+          ("browser_goto", {"url": "recipes:/recipe/r115?step=5"}))
+
+
+async def open_episodes(client: Client, n: int, concurrency: int,
+                        browse: bool = False) -> tuple[list[str], list[str]]:
     ids: list[str] = []
     errors: list[str] = []
     limit = anyio.Semaphore(concurrency)
@@ -139,10 +149,15 @@ async def open_episodes(client: Client, n: int, concurrency: int) -> tuple[list[
     async def one() -> None:
         async with limit:
             r = await client.call_tool("start_episode", {"task_id": TASK["id"]})
-        if r.is_error:
-            errors.append(str(r.content[0].text if r.content else r)[:200])
-        else:
-            ids.append(r.structured_content["episode_id"])
+            if r.is_error:
+                errors.append(str(r.content[0].text if r.content else r)[:200])
+                return
+            episode_id = r.structured_content["episode_id"]
+            for tool, arguments in BROWSE if browse else ():
+                r = await client.call_tool(tool, {"episode_id": episode_id, **arguments})
+                if r.is_error:
+                    errors.append(f"{tool}: " + str(r.content[0].text if r.content else r)[:200])
+        ids.append(episode_id)
 
     async with anyio.create_task_group() as tg:
         for _ in range(n):
@@ -199,13 +214,14 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
             pool.idle_s = args.idle_s
         report["pool"] = {"max_idle": pool.max_idle, "keep_idle": pool.keep_idle, "idle_s": pool.idle_s}
         report["idle_gc_every_s"] = service.collector.every_s
+        report["browse"] = [tool for tool, _ in BROWSE] if args.browse else []
         for index, n in enumerate(args.counts):
             # Before each count: no context open (the last count's pool closed), browser up.
             await pool.aclose()
             baseline = await settle_memory()
             load_before = loadavg()
             t0 = time.perf_counter()
-            ids, errors = await open_episodes(client, n, args.open_concurrency)
+            ids, errors = await open_episodes(client, n, args.open_concurrency, args.browse)
             opened_s = time.perf_counter() - t0
             just_opened = await settle_memory()
             load_open = loadavg()
@@ -244,6 +260,8 @@ def main() -> None:
     parser.add_argument("--idle-s", type=float, default=None, help="the pool's idle period (default: its own)")
     parser.add_argument("--idle-gc-s", type=float, default=None,
                         help="the idle collector's period (default: the browser config's; 0 turns it off, as before)")
+    parser.add_argument("--browse", action="store_true",
+                        help="each episode loads three recipe pages (search, click, goto) before idling")
     parser.add_argument("--idle-wait-s", type=float, default=25.0,
                         help="how long the open episodes idle before the reading (default 25: two idle-GC periods)")
     args = parser.parse_args()
