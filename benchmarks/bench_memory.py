@@ -191,13 +191,21 @@ async def settle_memory(seconds: float = 3.0) -> dict[str, Any]:
     return memory()
 
 
+def server_config(tmp: Path, browser: dict[str, Any]) -> ServerConfig:
+    """The benchmark's server: its one task, a run directory under ``tmp``, these browser options."""
+    try:
+        from ewa_mcp.settings import load_settings  # the typed settings, where the server has them
+    except ImportError:
+        return ServerConfig(task_dirs=[tmp / "tasks"], run_dir=tmp / "runs", services={"browser": browser})
+    return ServerConfig(task_dirs=[tmp / "tasks"], run_dir=tmp / "runs", settings=load_settings({"browser": browser}))
+
+
 async def run(args: argparse.Namespace) -> dict[str, Any]:
     tmp = Path(tempfile.mkdtemp(prefix="ewa-bench-memory-"))
     (tmp / "tasks").mkdir()
     (tmp / "tasks" / "bench.json").write_text(json.dumps(TASK))
     browser = {} if args.idle_gc_s is None else {"idle_gc_s": args.idle_gc_s}
-    mcp, episodes = build_server(ServerConfig(task_dirs=[tmp / "tasks"], run_dir=tmp / "runs",
-                                              services={"browser": browser}))
+    mcp, episodes = build_server(server_config(tmp, browser))
     report: dict[str, Any] = {"benchmark": "memory of idle web episodes", "counts": {}}
     async with Client(mcp) as client:
         # Launch the browser (and the sites) with one episode, then empty the pool: the baseline is a
