@@ -19,6 +19,7 @@ from typing import Any, Literal
 
 import anyio
 
+from .idlegc import IdleCollector
 from .pool import ContextPool
 
 # Without the background-networking flags Chromium keeps trying to reach Google services,
@@ -153,7 +154,8 @@ class BrowserService:
     removes Chromium's implicit proxy bypass of link-local addresses (cloud metadata).
     ``direct_hosts`` (from the browser allowlist) are reached without the proxy."""
 
-    def __init__(self, info: ChromiumInfo, headless: bool = True, direct_hosts: list[str] | tuple[str, ...] = ()):
+    def __init__(self, info: ChromiumInfo, headless: bool = True, direct_hosts: list[str] | tuple[str, ...] = (),
+                 pool: ContextPool | None = None, collector: IdleCollector | None = None):
         self.info = info
         self.headless = headless
         self.direct_hosts = list(direct_hosts)
@@ -164,7 +166,8 @@ class BrowserService:
         self._browser: Any = None
         self._lock = anyio.Lock()
         self._closed = False
-        self.pool = ContextPool()  # warm contexts handed from one episode to the next (pool.py)
+        self.pool = pool or ContextPool()  # warm contexts handed from one episode to the next (pool.py)
+        self.collector = collector or IdleCollector()  # garbage collection in quiet renderers (idlegc.py)
 
     async def browser(self) -> Any:
         """A connected Browser, launching (or relaunching) Chromium when needed."""
@@ -175,6 +178,7 @@ class BrowserService:
                 raise RuntimeError("the browser service has been shut down")
             if self._browser is None or not self._browser.is_connected():
                 await self._launch()
+                self.collector.start(self.current_browser)
         return self._browser
 
     async def _launch(self) -> None:
@@ -199,6 +203,10 @@ class BrowserService:
         return [*self.info.launch_args(), f"--proxy-server=http://127.0.0.1:{self._guard.getsockname()[1]}",
                 f"--proxy-bypass-list={';'.join(bypass)}"]
 
+    def current_browser(self) -> Any | None:
+        """The browser if it is up, else None; never launches one (for background work)."""
+        return self._browser if self.is_alive() else None
+
     def is_alive(self) -> bool:
         return self._browser is not None and self._browser.is_connected()
 
@@ -217,6 +225,7 @@ class BrowserService:
 
     async def aclose(self) -> None:
         self._closed = True
+        await self.collector.stop()
         await self.pool.aclose()
         browser, self._browser = self._browser, None
         driver, self._playwright = self._playwright, None
@@ -236,16 +245,19 @@ class BrowserService:
 async def chromium_service(services: Any) -> BrowserService:
     """Services factory: ``await services.get("chromium", chromium_service)``.
 
-    Reads ``services.settings`` (the browser options, EWA_CHROMIUM) and launches at once
+    Reads ``services.settings`` (the browser options: executable, headless, the pool's and the idle
+    collector's settings, config.py; EWA_CHROMIUM) and launches at once
     so that a missing or broken browser is reported by the first web episode, not its first action."""
     from urllib.parse import urlsplit
 
     from .safety import normalize_origin
 
     settings = services.settings
-    direct = [urlsplit(normalize_origin(origin)).hostname or "" for origin in settings.browser.allow_origins]
-    headless = settings.browser.headless
-    service = BrowserService(find_chromium(settings.chromium_path(), headless), headless=headless,
-                             direct_hosts=[h for h in direct if h])
+    browser = settings.browser
+    direct = [urlsplit(normalize_origin(origin)).hostname or "" for origin in browser.allow_origins]
+    service = BrowserService(find_chromium(settings.chromium_path(), browser.headless), headless=browser.headless,
+                             direct_hosts=[h for h in direct if h],
+                             pool=ContextPool(keep_idle=browser.pool_keep_idle, idle_s=browser.pool_idle_s),
+                             collector=IdleCollector(every_s=browser.idle_gc_s))
     await service.browser()
     return service

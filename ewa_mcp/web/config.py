@@ -18,3 +18,8 @@ class BrowserConfig(BaseModel):
     action_timeout_s: float = Field(5.0, gt=0, le=120)
     navigation_timeout_s: float = Field(15.0, gt=0, le=300)
     settle_timeout_s: float = Field(5.0, gt=0, le=120)
+    # Memory (docs/web.md, "Memory"): the warm pool falls back to pool_keep_idle contexts once they have been
+    # idle pool_idle_s; a page quiet for idle_gc_s gets one full garbage collection (0 turns that off).
+    pool_keep_idle: int = Field(2, ge=0, le=8)
+    pool_idle_s: float = Field(30.0, gt=0, le=86_400)
+    idle_gc_s: float = Field(10.0, ge=0, le=3_600)

@@ -19,16 +19,26 @@ Garbage: a renderer that only navigates lets its heap grow (to ~1 GB after a hun
 here) and slows down with it, ~1.7x over 150 episodes; a full collection every ``gc_every``
 hand-overs keeps it flat. ``max_uses`` also bounds what Playwright keeps per page (one object
 per request, released only when the page closes).
+
+Shrinking: every idle context keeps a renderer process resident (~30 MB PSS). After a burst of
+episodes the pool would hold ``max_idle`` of them for good, so a context idle for ``idle_s``
+seconds is closed, the longest-idle first, until ``keep_idle`` remain. A timer task of the pool
+does it (started when a context goes idle, ended by ``aclose``); ``shrink()`` is the same step,
+callable with an injected clock (tests, benchmarks).
 """
 
 from __future__ import annotations
 
 import asyncio
-from collections.abc import Iterable
+import time
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import Any
 
 SCRUB_TIMEOUT_S = 5.0
+# After a burst, the pool falls back to this many warm contexts once they have been idle this long.
+KEEP_IDLE = 2
+IDLE_S = 30.0
 
 
 @dataclass(eq=False)
@@ -42,6 +52,7 @@ class WarmContext:
     cdp: Any = None
     uses: int = 0
     broken: bool = False  # its page crashed or closed (with the context, or the browser)
+    idle_since: float = 0.0  # the pool's clock when it was last handed back
 
     def watch(self, page: Any) -> None:
         """Keep ``page`` as the tab to hand on, and hear if it dies while idle."""
@@ -59,11 +70,23 @@ class WarmContext:
 
 
 class ContextPool:
-    def __init__(self, max_idle: int = 8, max_uses: int = 50, gc_every: int = 10):
+    def __init__(self, max_idle: int = 8, max_uses: int = 50, gc_every: int = 10, keep_idle: int = KEEP_IDLE,
+                 idle_s: float = IDLE_S, clock: Callable[[], float] = time.monotonic):
+        if not 0 <= keep_idle <= max_idle:
+            raise ValueError(f"keep_idle must be between 0 and max_idle ({max_idle}), got {keep_idle!r}")
+        if not idle_s > 0:
+            raise ValueError(f"idle_s must be a positive number of seconds, got {idle_s!r}")
         self.max_idle = max_idle
         self.max_uses = max_uses
         self.gc_every = gc_every
-        self._idle: list[WarmContext] = []
+        self.keep_idle = keep_idle
+        self.idle_s = idle_s
+        self.clock = clock
+        self._idle: list[WarmContext] = []  # the longest idle first: take() hands on the most recent
+        self._scrubbing = 0  # hand-overs under way: they count against max_idle already
+        self._reaper: asyncio.Task[None] | None = None
+        self._wake = asyncio.Event()  # tells the reaper that the pool changed (made lazily, see _ensure_reaper)
+        self.shrinks = 0  # times shrink() closed something (read by benchmarks and tests)
         self.reused = 0  # contexts handed on (read by benchmarks and tests)
         self.closed = 0  # contexts closed instead of kept
 
@@ -86,19 +109,66 @@ class ContextPool:
 
         The caller has already removed its own listeners and routes."""
         if (warm.broken or warm.page is None or warm.page.is_closed() or warm.uses + 1 >= self.max_uses
-                or len(self._idle) >= self.max_idle):
+                or len(self._idle) + self._scrubbing >= self.max_idle):
             await self._close(warm)
             return False
+        self._scrubbing += 1  # concurrent hand-overs must not overfill the pool while they scrub
         try:
             await asyncio.wait_for(self._scrub(warm, sorted(set(origins))), SCRUB_TIMEOUT_S)
         except Exception:
             await self._close(warm)
             return False
+        finally:
+            self._scrubbing -= 1
         if warm.broken:
             await self._close(warm)
             return False
+        warm.idle_since = self.clock()
         self._idle.append(warm)
+        self._ensure_reaper()
         return True
+
+    async def shrink(self) -> int:
+        """Close the contexts idle for ``idle_s`` or longer, the longest idle first, leaving at least
+        ``keep_idle``; returns how many were closed."""
+        now = self.clock()
+        stale: list[WarmContext] = []
+        while len(self._idle) > self.keep_idle and self._idle[0].idle_since + self.idle_s <= now:
+            stale.append(self._idle.pop(0))
+        for warm in stale:
+            await self._close(warm)
+        if stale:
+            self.shrinks += 1
+        return len(stale)
+
+    def next_shrink_in(self) -> float | None:
+        """Seconds until shrink() would close something, or None while nothing is to be closed."""
+        if len(self._idle) <= self.keep_idle:
+            return None
+        return max(0.0, self._idle[0].idle_since + self.idle_s - self.clock())
+
+    def _ensure_reaper(self) -> None:
+        """Start the timer task that calls shrink(), or wake it to look at the pool again."""
+        if self._reaper is None or self._reaper.done():
+            self._wake = asyncio.Event()  # bound to the running loop (a pool may be made outside one)
+            self._reaper = asyncio.get_running_loop().create_task(self._reap(), name="context-pool-shrink")
+        else:
+            self._wake.set()
+
+    async def _reap(self) -> None:
+        while True:
+            wait = self.next_shrink_in()
+            if wait is None:
+                return  # started again by the next context that goes idle beyond keep_idle
+            self._wake.clear()
+            try:
+                await asyncio.wait_for(self._wake.wait(), wait)
+            except asyncio.TimeoutError:
+                pass
+            try:
+                await self.shrink()
+            except Exception:
+                pass  # closing is best effort (_close already ignores a browser that is gone)
 
     async def _scrub(self, warm: WarmContext, origins: list[str]) -> None:
         context, page = warm.context, warm.page
@@ -125,6 +195,13 @@ class ContextPool:
             pass  # the browser is already gone
 
     async def aclose(self) -> None:
+        reaper, self._reaper = self._reaper, None
+        if reaper is not None and not reaper.done():
+            reaper.cancel()
+            try:
+                await reaper
+            except (asyncio.CancelledError, Exception):
+                pass
         idle, self._idle = self._idle, []
         for warm in idle:
             await self._close(warm)

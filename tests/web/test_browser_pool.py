@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import asyncio
+import time
 from types import SimpleNamespace
 
 import pytest
 
 from ewa_mcp.environment import EnvError
-from ewa_mcp.web.pool import ContextPool, WarmContext
+from ewa_mcp.web.pool import IDLE_S, KEEP_IDLE, ContextPool, WarmContext
 
 from .helpers import crash_tab, open_env
 
@@ -105,3 +107,78 @@ async def test_pool_hands_on_only_contexts_of_this_launch_and_settings():
     broken.broken = True
     pool._idle += [good, broken]
     assert await pool.take((1280, 720), launch=1) is good and good.uses == 1
+
+
+class FakeClock:
+    """The pool's clock, moved by the test: no waiting for idle periods."""
+
+    def __init__(self) -> None:
+        self.now = 1000.0
+
+    def __call__(self) -> float:
+        return self.now
+
+
+async def _open_and_close(web_services, n: int, prefix: str) -> None:
+    envs = [await open_env(web_services, f"fixture:/item/{i + 1}", episode_id=f"{prefix}-{i}") for i in range(n)]
+    for env in envs:
+        await env.close()
+
+
+async def test_idle_contexts_beyond_keep_idle_are_closed_after_the_idle_period(web_services):
+    pool = await _pool(web_services)
+    browser = await web_services.peek("chromium").browser()
+    clock = FakeClock()
+    pool.clock, pool.keep_idle, pool.idle_s = clock, 2, 30.0
+    await _open_and_close(web_services, 4, "ep-shrink")  # a burst: four warm contexts stay behind
+    assert pool.idle() == 4
+    contexts = len(browser.contexts)
+    newest = list(pool._idle[-2:])
+    clock.now += 29.0
+    assert await pool.shrink() == 0 and pool.idle() == 4  # not idle long enough yet
+    assert pool.next_shrink_in() == pytest.approx(1.0)
+    clock.now += 1.0
+    assert await pool.shrink() == 2 and pool.idle() == 2
+    assert pool._idle == newest  # the longest idle went first
+    assert len(browser.contexts) == contexts - 2  # really closed in the browser: their renderers are gone
+    clock.now += 1000.0
+    assert await pool.shrink() == 0 and pool.idle() == 2  # keep_idle stay however long the pool idles
+    assert pool.next_shrink_in() is None
+    # The kept contexts still serve episodes.
+    reused = pool.reused
+    env = await open_env(web_services, "fixture:/item/9", episode_id="ep-shrink-after")
+    assert pool.reused == reused + 1 and "fixture:/item/9" in (await env.observe()).text
+    await env.close()
+    pool.clock, pool.idle_s = time.monotonic, IDLE_S
+
+
+async def test_the_pool_shrinks_by_itself_when_left_idle(web_services):
+    pool = await _pool(web_services)
+    pool.keep_idle, pool.idle_s = 1, 0.2  # a short idle period, on the real clock
+    try:
+        await _open_and_close(web_services, 3, "ep-reap")
+        for _ in range(500):  # bounded wait for the pool's own timer; nothing here is asserted on time
+            if pool.idle() <= 1:
+                break
+            await asyncio.sleep(0.02)
+        assert pool.idle() == 1 and pool.shrinks >= 1
+    finally:
+        pool.keep_idle, pool.idle_s = KEEP_IDLE, IDLE_S
+
+
+async def test_concurrent_hand_overs_never_overfill_the_pool(web_services):
+    pool = await _pool(web_services)
+    pool.max_idle = 2
+    try:
+        envs = [await open_env(web_services, "fixture:/", episode_id=f"ep-fill-{i}") for i in range(4)]
+        await asyncio.gather(*(env.close() for env in envs))  # all scrubbing at the same time
+        assert pool.idle() == 2
+    finally:
+        pool.max_idle = 8
+
+
+def test_pool_settings_are_checked():
+    with pytest.raises(ValueError, match="keep_idle must be between 0 and max_idle"):
+        ContextPool(max_idle=2, keep_idle=3)
+    with pytest.raises(ValueError, match="idle_s must be a positive"):
+        ContextPool(idle_s=0)
