@@ -12,7 +12,9 @@ Two sources of truth, each bounded by what is left of one deadline:
   started it has returned.
 
 The hooks also count the popups a document asks for (window.open, links and forms with a
-target), so that the environment can wait for exactly that many new tabs.
+target), so that the environment can wait for exactly that many new tabs, and the changes made to
+the DOM (a MutationObserver), so that an action can tell whether the latest snapshot still shows
+the page and skip taking another.
 """
 
 from __future__ import annotations
@@ -56,7 +58,18 @@ PAGE_HOOKS_JS = """(() => {
     if (a && (opensWindow(a.target) || e.ctrlKey || e.metaKey || e.shiftKey || e.button === 1)) note();
   }, true);
   document.addEventListener('submit', (e) => { if (opensWindow(e.target.target)) note(); }, true);
+  // Every change to the DOM (shadow roots included) bumps a counter: a snapshot taken after the
+  // counter was read is still the page as it is while the counter reads the same (see changes()).
+  let changes = 0;
+  const observer = new MutationObserver(() => { changes++; });
+  const watch = (root) => observer.observe(root, {subtree: true, childList: true, attributes: true,
+                                                  characterData: true});
+  watch(document);
+  const attachShadow = Element.prototype.attachShadow;
+  Element.prototype.attachShadow = function (...args) { const root = attachShadow.apply(this, args); watch(root); return root; };
   Object.defineProperty(window, '__ewa', {value: {
+    // Mutation records are delivered as a microtask: take them now so that none is pending.
+    changes() { if (observer.takeRecords().length) changes++; return changes; },
     // Resolves [settled, popups asked for, had work] once this action's requests are done and a
     // macrotask has let their callbacks run (a callback may start more work: then wait again).
     idle(ms) {
@@ -79,6 +92,8 @@ PAGE_HOOKS_JS = """(() => {
   }});
 })();"""
 IDLE_JS = "(ms) => Promise.resolve(window.__ewa ? window.__ewa.idle(ms) : [true, 0, false])"
+# The page's DOM-change counter, or -1 where the hooks are not installed (about:blank, error pages).
+CHANGES_JS = "(window.__ewa ? window.__ewa.changes() : -1)"
 
 
 class PageActivity:
