@@ -76,14 +76,18 @@ class BrowserEnvironment(Environment):
 
     async def final_state(self) -> dict[str, Any]:
         s = self.session
-        tabs = []
-        for tab in s.tabs:
-            title = tab.last_title
+
+        async def title_of(tab: Tab) -> str:
             if not tab.page.is_closed():
                 try:
-                    title = await asyncio.wait_for(tab.page.title(), 2)
+                    return await asyncio.wait_for(tab.page.title(), 2)
                 except Exception:
                     pass
+            return tab.last_title
+
+        titles = await asyncio.gather(*[title_of(tab) for tab in s.tabs])  # one round trip for every tab
+        tabs = []
+        for tab, title in zip(s.tabs, titles, strict=True):
             url = tab.page.url if not tab.page.is_closed() else tab.last_url
             tabs.append({"url": url, "title": title, "site_url": s.site_url(url)})
         return {
