@@ -19,8 +19,11 @@ from .observation import collect, observe, present
 from .render import EDITABLE_ROLES
 from .safety import BlockedUrlError
 from .session import BrowserSession
+from .settle import CHANGES_JS
 from .tabs import PAGE_INFO_JS, Tab, first_line, is_closed_error, locate, navigate, timeout_reason
 
+# The page facts and the DOM-change counter, read together when the page says it has settled.
+FACTS_AND_CHANGES_JS = f"() => [({PAGE_INFO_JS})(), {CHANGES_JS}]"
 SCROLL_JS = """(dir) => {
   const x = scrollX, y = scrollY;
   const dx = dir === 'left' ? -0.8 * innerWidth : dir === 'right' ? 0.8 * innerWidth : 0;
@@ -80,16 +83,13 @@ class BrowserActions:
             s.notice(note)
         if s.blocked_nav is not None:
             await self._refuse_navigation(action_name, tab)
-        # Most actions leave nothing running, so the snapshot is taken while the page is asked
-        # whether it has work in flight; it is taken again only when the page had some.
+        # The page is asked whether this action's work is done; its answer brings the page facts
+        # and the DOM-change counter (settle.py), read when it answers, so that the snapshot taken
+        # next is known to be at least that new. Most actions leave nothing running: one round trip.
         want_image = s.mode() in ("vision", "both")
-        idle, collected = await asyncio.gather(
-            tab.activity.idle(mark, deadline, lambda expression: s.main_world(tab, expression), PAGE_INFO_JS),
-            collect(s, tab, want_image, facts=False),  # the idle answer brings the facts
-            return_exceptions=True)
-        if isinstance(idle, BaseException):
-            raise idle
-        settled, asked, waited, facts = idle
+        settled, asked, _waited, answer = await tab.activity.idle(
+            mark, deadline, lambda expression: s.main_world(tab, expression), FACTS_AND_CHANGES_JS)
+        answered_generation = tab.generation
         if not settled:
             s.notice(f"requests of the page were still running after {s.config.settle_timeout_s:g} s")
         if popups_before is not None and asked > s.popups_seen - popups_before:
@@ -98,15 +98,11 @@ class BrowserActions:
         current = s.current()
         if current is not tab:  # a popup became the current tab
             await s.wait_loaded(current)
-        if (waited or current is not tab or isinstance(collected, BaseException)
-                or tab.snapshot_generation != tab.generation):
-            if isinstance(collected, BaseException) and is_closed_error(collected):
-                raise collected
             collected = await collect(s, current, want_image)
-        elif not want_image:
-            if facts is None:  # the page could not be asked: ask for the facts now
-                facts = await s.main_world(tab, f"({PAGE_INFO_JS})()")
-            collected = (facts, b"")
+        elif answer is None:  # the page could not be asked: read the facts with the snapshot
+            collected = await collect(s, tab, want_image)
+        else:
+            collected = await collect(s, tab, want_image, known=(answer[0], answer[1], answered_generation))
         return await present(s, current, collected)
 
     async def _refuse_navigation(self, action_name: str, tab: Tab) -> None:

@@ -111,10 +111,19 @@ async def observe(session: BrowserSession, *, viewport_only: bool | None = None,
     return await present(session, tab, collected, viewport_only=viewport_only, max_chars=max_chars, body=body)
 
 
-async def collect(session: BrowserSession, tab: Tab, want_image: bool, facts: bool = True) -> tuple[Any, bytes]:
-    """The snapshot (with the page facts unless ``facts`` is false) and, when wanted, the
-    Set-of-Marks screenshot."""
-    info = await take_snapshot(session, tab, boxes=want_image or session.viewport_only(), facts=facts or want_image)
+async def collect(session: BrowserSession, tab: Tab, want_image: bool,
+                  known: tuple[list[Any], str | None, int] | None = None) -> tuple[Any, bytes]:
+    """The snapshot with the page facts and, when wanted, the Set-of-Marks screenshot.
+
+    ``known``: (facts, DOM-change counter, tab generation) just read in the page by the caller."""
+    if known is not None:
+        info, changes, generation = known
+        await take_snapshot(session, tab, boxes=want_image or session.viewport_only(), facts=False,
+                            counted=(changes, generation))
+        if tab.generation != generation:  # a navigation landed meanwhile: these facts are the old page's
+            info = await session.main_world(tab, f"({PAGE_INFO_JS})()")
+    else:
+        info = await take_snapshot(session, tab, boxes=want_image or session.viewport_only())
     if not want_image:
         return info, b""
     marks = render_tree(tab.roots, lambda n: tab.ref_ids[n.ref], title="", viewport=(info[3], info[4])).marks

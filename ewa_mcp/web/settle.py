@@ -60,6 +60,8 @@ PAGE_HOOKS_JS = """(() => {
   document.addEventListener('submit', (e) => { if (opensWindow(e.target.target)) note(); }, true);
   // Every change to the DOM (shadow roots included) bumps a counter: a snapshot taken after the
   // counter was read is still the page as it is while the counter reads the same (see changes()).
+  // The count is named by a token of this document, so that counts of two documents never compare equal.
+  const token = Math.random().toString(36).slice(2);
   let changes = 0;
   const observer = new MutationObserver(() => { changes++; });
   const watch = (root) => observer.observe(root, {subtree: true, childList: true, attributes: true,
@@ -69,7 +71,7 @@ PAGE_HOOKS_JS = """(() => {
   Element.prototype.attachShadow = function (...args) { const root = attachShadow.apply(this, args); watch(root); return root; };
   Object.defineProperty(window, '__ewa', {value: {
     // Mutation records are delivered as a microtask: take them now so that none is pending.
-    changes() { if (observer.takeRecords().length) changes++; return changes; },
+    changes() { if (observer.takeRecords().length) changes++; return token + ':' + changes; },
     // Resolves [settled, popups asked for, had work] once this action's requests are done and a
     // macrotask has let their callbacks run (a callback may start more work: then wait again).
     idle(ms) {
@@ -92,8 +94,9 @@ PAGE_HOOKS_JS = """(() => {
   }});
 })();"""
 IDLE_JS = "(ms) => Promise.resolve(window.__ewa ? window.__ewa.idle(ms) : [true, 0, false])"
-# The page's DOM-change counter, or -1 where the hooks are not installed (about:blank, error pages).
-CHANGES_JS = "(window.__ewa ? window.__ewa.changes() : -1)"
+# The page's DOM-change count ("<document token>:<count>"), or null where the hooks are not
+# installed (about:blank, error pages).
+CHANGES_JS = "(window.__ewa ? window.__ewa.changes() : null)"
 
 
 class PageActivity:

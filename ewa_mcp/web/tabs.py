@@ -48,9 +48,9 @@ class Tab:
     nodes: list[AriaNode] = field(default_factory=list)  # the latest snapshot, in document order
     ref_ids: dict[str, int] = field(default_factory=dict)  # aria ref -> element id, latest snapshot
     snapshot_generation: int = -1
-    # The page's DOM-change counter read just before the latest snapshot; -1: unknown (no hooks,
-    # or frames inside, whose changes the counter does not see).
-    snapshot_changes: int = -1
+    # The page's DOM-change count read just before the latest snapshot; None: unknown (no hooks,
+    # or frames inside, whose changes the count does not see).
+    snapshot_changes: str | None = None
     roots: list[AriaNode] = field(default_factory=list)
     crashed: bool = False
     closed: bool = False
@@ -172,16 +172,23 @@ async def navigate(session: BrowserSession, tab: Tab, url: str) -> None:
 
 
 # ---------------------------------------------------------------- elements
-async def take_snapshot(session: BrowserSession, tab: Tab, boxes: bool = False, facts: bool = True) -> Any:
+async def take_snapshot(session: BrowserSession, tab: Tab, boxes: bool = False, facts: bool = True,
+                        counted: tuple[str | None, int] | None = None) -> Any:
     """Take the ARIA snapshot (after the page facts, when asked, and the DOM-change counter); assign
-    ids. Retries when a navigation lands meanwhile. Returns the facts (None unless asked)."""
+    ids. Retries when a navigation lands meanwhile. Returns the facts (None unless asked).
+
+    ``counted``: (counter, tab generation) the caller has just read in the page (the settling after
+    an action does, with the page facts), which saves reading it again when no facts are asked."""
     expression = f"[{CHANGES_JS}, ({PAGE_INFO_JS})()]" if facts else f"[{CHANGES_JS}, null]"
     for attempt in range(3):
         generation = tab.generation
         try:
             # The counter is read before the snapshot starts, so that an unchanged counter later
             # means nothing changed since (the facts come with it, one round trip for both).
-            changes, info = await session.main_world(tab, expression)
+            if counted is not None and attempt == 0 and not facts and counted[1] == generation:
+                changes, info = counted[0], None
+            else:
+                changes, info = await session.main_world(tab, expression)
             # Boxes (for viewport filtering and marks) cost a layout query per element: only on demand.
             text = await session.bounded(tab.page.aria_snapshot(
                 mode="ai", boxes=boxes, timeout=session.config.action_timeout_s * 1000))
@@ -200,7 +207,7 @@ async def take_snapshot(session: BrowserSession, tab: Tab, boxes: bool = False, 
     tab.ref_ids = {n.ref: session.elements.id_for(tab.uid, tab.generation, n) for n in tab.nodes if n.ref}
     tab.snapshot_generation = tab.generation
     framed = any(n.role == "iframe" for n in tab.nodes)  # a frame's changes are not counted by the page
-    tab.snapshot_changes = -1 if framed or not isinstance(changes, int) else changes
+    tab.snapshot_changes = None if framed or not isinstance(changes, str) else changes
     if info is not None:
         tab.last_title = info[0]
     tab.last_url = tab.page.url
@@ -210,7 +217,7 @@ async def take_snapshot(session: BrowserSession, tab: Tab, boxes: bool = False, 
 
 async def snapshot_is_current(session: BrowserSession, tab: Tab) -> bool:
     """Whether the latest snapshot still shows the page: same document, no DOM change since."""
-    if tab.snapshot_generation != tab.generation or tab.snapshot_changes < 0:
+    if tab.snapshot_generation != tab.generation or tab.snapshot_changes is None:
         return False
     try:
         changes = await session.main_world(tab, CHANGES_JS)
