@@ -284,13 +284,80 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
     return result
 
 
+async def count_calls() -> dict[str, Any]:
+    """Messages to Playwright per step of one episode on the fixture site (the third of three)."""
+    import collections
+    import re as _re
+    from types import SimpleNamespace
+
+    from playwright._impl import connection  # the one place every message goes out (a private module)
+
+    from ewa_mcp.services import Services
+    from ewa_mcp.taskmodel import Task
+    from ewa_mcp.web.chromium import chromium_service
+    from ewa_mcp.web.env import BrowserEnvironment
+    from ewa_mcp.web.testsite import start_fixture_sites
+
+    sent: collections.Counter[str] = collections.Counter()
+    original = connection.Connection.send_message_to_server
+
+    def counting(self: Any, obj: Any, method: str, params: Any, options: Any) -> Any:
+        if method != "__waitInfo__":
+            sent[method if method != "send" else "cdp:" + str((params or {}).get("method"))] += 1
+        return original(self, obj, method, params, options)
+
+    connection.Connection.send_message_to_server = counting  # type: ignore[method-assign]
+    sites = start_fixture_sites()
+    services = Services({})
+    await services.get("websites", lambda _: sites)
+    await services.get("chromium", chromium_service)
+    task = Task.model_validate({"id": "calls", "domain": "demo", "intent": "count",
+                                "start": {"environment": "web", "web": {"start_url": "fixture:/"}}})
+    steps: dict[str, dict[str, int]] = {}
+
+    async def step(name: str, work: Any) -> Any:
+        sent.clear()
+        result = await work
+        steps[name] = dict(sorted(sent.items()))
+        return result
+
+    try:
+        for index in range(3):
+            env = BrowserEnvironment(SimpleNamespace(id=f"ep-calls-{index}", options={}), services)
+            await step("start (reset)", env.reset(task, {}))
+            seen = await step("first observation", env.observe())
+            soup = _re.search(r"\[(\d+)\] link 'Lentil Soup'", seen.text).group(1)  # type: ignore[union-attr]
+            await step("click by id (loads a page)", env.click(soup))
+            await step("go_back", env.go_back())
+            await step("click by role and name (same page)", env.click("button 'Mark done'"))
+            await step("click by role and name (loads a page)", env.click("link 'Apple Crumble'"))
+            await step("goto", env.goto("fixture:/"))
+            await step("type", env.type("textbox 'Search items'", "soup"))
+            await step("final_state", env.final_state())
+            await step("close (finish_episode)", env.close())
+            handovers = services.peek("web-handovers")
+            if handovers is not None:
+                await handovers.drain()
+    finally:
+        connection.Connection.send_message_to_server = original  # type: ignore[method-assign]
+        await services.aclose()
+        sites.stop()
+    return {"benchmark": "messages to Playwright per step (not timed)",
+            "steps": {name: {"total": sum(c.values()), "ariaSnapshot": c.get("ariaSnapshot", 0), "calls": c}
+                      for name, c in steps.items()}}
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--rounds", type=int, default=15)
     parser.add_argument("--warmup", type=int, default=2)
     parser.add_argument("--episodes", type=int, default=20, help="start/finish episode pairs per task")
     parser.add_argument("--no-peer-settle0", action="store_true", help="skip the peer run with --timeout-settle 0")
+    parser.add_argument("--calls", action="store_true", help="count messages to Playwright per step instead")
     args = parser.parse_args()
+    if args.calls:
+        print(json.dumps(anyio.run(count_calls), indent=2))
+        return
     print(json.dumps(anyio.run(run, args), indent=2))
 
 
