@@ -123,7 +123,7 @@ async def collect(session: BrowserSession, tab: Tab, want_image: bool,
         if tab.generation != generation:  # a navigation landed meanwhile: these facts are the old page's
             info = await session.main_world(tab, f"({PAGE_INFO_JS})()")
     else:
-        info = await take_snapshot(session, tab, boxes=want_image or session.viewport_only())
+        info = await take_snapshot(session, tab, boxes=want_image or session.viewport_only(), count=not want_image)
     if not want_image:
         return info, b""
     marks = render_tree(tab.roots, lambda n: tab.ref_ids[n.ref], title="", viewport=(info[3], info[4])).marks

@@ -14,6 +14,7 @@ The tab list and the context are session.py's; what the agent is shown is observ
 
 from __future__ import annotations
 
+import asyncio
 from dataclasses import dataclass, field
 from functools import partial
 from typing import TYPE_CHECKING, Any
@@ -173,25 +174,34 @@ async def navigate(session: BrowserSession, tab: Tab, url: str) -> None:
 
 # ---------------------------------------------------------------- elements
 async def take_snapshot(session: BrowserSession, tab: Tab, boxes: bool = False, facts: bool = True,
-                        counted: tuple[str | None, int] | None = None) -> Any:
+                        counted: tuple[str | None, int] | None = None, count: bool = True) -> Any:
     """Take the ARIA snapshot (after the page facts, when asked, and the DOM-change counter); assign
     ids. Retries when a navigation lands meanwhile. Returns the facts (None unless asked).
 
     ``counted``: (counter, tab generation) the caller has just read in the page (the settling after
-    an action does, with the page facts), which saves reading it again when no facts are asked."""
+    an action does, with the page facts), which saves reading it again when no facts are asked.
+    ``count`` false: no counter (a screenshot's marks change the page anyway), and the facts are read
+    while the snapshot is taken."""
     expression = f"[{CHANGES_JS}, ({PAGE_INFO_JS})()]" if facts else f"[{CHANGES_JS}, null]"
     for attempt in range(3):
         generation = tab.generation
         try:
             # The counter is read before the snapshot starts, so that an unchanged counter later
             # means nothing changed since (the facts come with it, one round trip for both).
-            if counted is not None and attempt == 0 and not facts and counted[1] == generation:
-                changes, info = counted[0], None
-            else:
-                changes, info = await session.main_world(tab, expression)
             # Boxes (for viewport filtering and marks) cost a layout query per element: only on demand.
-            text = await session.bounded(tab.page.aria_snapshot(
-                mode="ai", boxes=boxes, timeout=session.config.action_timeout_s * 1000))
+            def snapshot() -> Any:
+                return tab.page.aria_snapshot(mode="ai", boxes=boxes, timeout=session.config.action_timeout_s * 1000)
+
+            if not count:
+                changes = None
+                text, info = await session.bounded(asyncio.gather(
+                    snapshot(), session.main_world(tab, f"({PAGE_INFO_JS})()") if facts else asyncio.sleep(0)))
+            else:
+                if counted is not None and attempt == 0 and not facts and counted[1] == generation:
+                    changes, info = counted[0], None
+                else:
+                    changes, info = await session.main_world(tab, expression)
+                text = await session.bounded(snapshot())
         except PlaywrightError as exc:
             if is_closed_error(exc) or attempt == 2:
                 raise
