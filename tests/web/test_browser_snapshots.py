@@ -46,6 +46,18 @@ async def test_a_click_takes_one_snapshot_whatever_the_reference(web_services, s
         await env.close()
 
 
+async def test_a_click_whose_page_has_work_in_flight_takes_one_snapshot_after_it(web_services, snapshots):
+    env = await open_env(web_services, "fixture:/", episode_id="ep-snap-c")
+    try:
+        await env.observe()
+        snapshots.clear()
+        # The button's fetch answers after 50 ms: the one snapshot is taken once the page says it is done.
+        counted = await env.click("button 'Count click'")
+        assert "Clicked 1 times" in counted.text and len(snapshots) == 1
+    finally:
+        await env.close()
+
+
 async def test_what_the_page_changed_since_the_observation_is_seen_by_the_next_action(web_services, snapshots):
     env = await open_env(web_services, "fixture:/", episode_id="ep-snap-b")
     try:
