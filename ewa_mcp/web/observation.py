@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any, Literal
 
 from playwright.async_api import Error as PlaywrightError
 
-from ..environment import EnvError, Observation
+from ..environment import Observation
 from .render import RenderedTree, render_tree
 from .som import DRAW_MARKS_JS, REMOVE_MARKS_JS, marks_payload
 from .tabs import PAGE_INFO_JS, Tab, take_snapshot
@@ -131,11 +131,10 @@ async def collect(session: BrowserSession, tab: Tab, want_image: bool,
     try:
         png = await capture(session, tab)
     finally:
-        # Awaited (one round trip): no later command to the page, ours or a test's, may see the overlay.
-        try:
-            await session.main_world(tab, f"({REMOVE_MARKS_JS})()")
-        except (PlaywrightError, EnvError):
-            pass  # the page is gone or stuck: the error that matters is the capture's, or the next call's
+        # Not awaited: it is sent before the observation is returned (present() passes the event loop
+        # at least once), and later commands to the page run after it, so nothing ever sees the overlay.
+        removal = asyncio.ensure_future(session.main_world(tab, f"({REMOVE_MARKS_JS})()"))
+        removal.add_done_callback(lambda f: f.cancelled() or f.exception())
     return info, png
 
 
@@ -158,9 +157,9 @@ async def present(session: BrowserSession, tab: Tab, collected: tuple[list[Any],
     budget = int(max_chars or session.options.get("web_max_chars") or session.config.max_chars)
     rendered = render_tree(tab.roots, lambda n: tab.ref_ids[n.ref], title=facts[0], viewport=(facts[3], facts[4]),
                            viewport_only=viewport_only, max_chars=budget)
-    others = [t for t in session.tabs if t is not tab]
-    if others:  # the current tab's title is in the facts: ask only the others
-        await asyncio.gather(*[_refresh_title(t) for t in others])
+    # Every tab's title (the current tab's is in the facts). Gathered as tasks even with one tab:
+    # that passes the event loop, so a marks removal scheduled by collect() has been sent.
+    await asyncio.gather(*[_refresh_title(t) for t in session.tabs if t is not tab], asyncio.sleep(0))
     lines = []
     for i, t in enumerate(session.tabs):
         url = t.last_url if t.page.is_closed() else t.page.url
