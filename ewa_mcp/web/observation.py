@@ -104,18 +104,22 @@ async def observe(session: BrowserSession, *, viewport_only: bool | None = None,
     else:
         want_image = view == "screenshot"
         body = "marks" if want_image else "tree"
+    # No DOM-change count here: it would have to be read before the snapshot (a round trip more on
+    # start_episode and every get_observation); the facts are read while the snapshot is taken. The
+    # next action that names an element then takes its own snapshot, as it always did.
     if viewport_only and not want_image:
-        collected = (await take_snapshot(session, tab, boxes=True), b"")
+        collected = (await take_snapshot(session, tab, boxes=True, count=False), b"")
     else:
-        collected = await collect(session, tab, want_image)
+        collected = await collect(session, tab, want_image, count=False)
     return await present(session, tab, collected, viewport_only=viewport_only, max_chars=max_chars, body=body)
 
 
 async def collect(session: BrowserSession, tab: Tab, want_image: bool,
-                  known: tuple[list[Any], str | None, int] | None = None) -> tuple[Any, bytes]:
+                  known: tuple[list[Any], str | None, int] | None = None, count: bool = True) -> tuple[Any, bytes]:
     """The snapshot with the page facts and, when wanted, the Set-of-Marks screenshot.
 
-    ``known``: (facts, DOM-change counter, tab generation) just read in the page by the caller."""
+    ``known``: (facts, DOM-change counter, tab generation) just read in the page by the caller.
+    ``count`` false: the snapshot records no DOM-change count (see tabs.take_snapshot)."""
     if known is not None:
         info, changes, generation = known
         await take_snapshot(session, tab, boxes=want_image or session.viewport_only(), facts=False,
@@ -123,7 +127,8 @@ async def collect(session: BrowserSession, tab: Tab, want_image: bool,
         if tab.generation != generation:  # a navigation landed meanwhile: these facts are the old page's
             info = await session.main_world(tab, f"({PAGE_INFO_JS})()")
     else:
-        info = await take_snapshot(session, tab, boxes=want_image or session.viewport_only(), count=not want_image)
+        info = await take_snapshot(session, tab, boxes=want_image or session.viewport_only(),
+                                   count=count and not want_image)
     if not want_image:
         return info, b""
     marks = render_tree(tab.roots, lambda n: tab.ref_ids[n.ref], title="", viewport=(info[3], info[4])).marks

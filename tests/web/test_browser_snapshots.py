@@ -30,7 +30,7 @@ def snapshots(monkeypatch):
 async def test_a_click_takes_one_snapshot_whatever_the_reference(web_services, snapshots):
     env = await open_env(web_services, "fixture:/", episode_id="ep-snap-a")
     try:
-        await env.observe()
+        await env.goto("fixture:/")  # an action: its observation's snapshot records the page's DOM-change count
         snapshots.clear()
         done = await env.click("button 'Mark done'")  # role+name: resolved on the observation's snapshot
         assert "button 'Done'" in done.text and len(snapshots) == 1
@@ -42,6 +42,11 @@ async def test_a_click_takes_one_snapshot_whatever_the_reference(web_services, s
         snapshots.clear()
         await env.click(str(element_id(again, "link", "Apple Crumble")))  # an id: the same
         assert len(snapshots) == 1
+        await env.go_back()
+        seen = await env.observe()  # a plain observation records no count: the next action snapshots
+        snapshots.clear()
+        await env.click("button 'Mark done'")
+        assert len(snapshots) == 2 and "button 'Mark done'" in seen.text
     finally:
         await env.close()
 
@@ -49,7 +54,7 @@ async def test_a_click_takes_one_snapshot_whatever_the_reference(web_services, s
 async def test_a_click_whose_page_has_work_in_flight_takes_one_snapshot_after_it(web_services, snapshots):
     env = await open_env(web_services, "fixture:/", episode_id="ep-snap-c")
     try:
-        await env.observe()
+        await env.goto("fixture:/")
         snapshots.clear()
         # The button's fetch answers after 50 ms: the one snapshot is taken once the page says it is done.
         counted = await env.click("button 'Count click'")
