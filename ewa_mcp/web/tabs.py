@@ -5,9 +5,10 @@
 * Navigation (``navigate``): a checked URL loaded in the tab.
 * Elements (``take_snapshot``, ``locate``): Playwright's AI-mode ARIA snapshot parsed into nodes
   with episode-wide ids, and an agent's reference (an id, or role and name) turned into a locator.
-  A snapshot remembers the page's DOM-change counter (settle.py) read just before it was taken; while
-  the counter reads the same, the snapshot still shows the page, so locating an element needs no
-  new snapshot (and no check that its ref still resolves).
+  A snapshot taken after an action (or to locate an element) remembers the page's DOM-change counter
+  (settle.py) read just before it was taken; while the counter reads the same, the snapshot still
+  shows the page, so locating an element needs no new snapshot (and no check that its ref still
+  resolves). Plain observations do not count (observation.py): the next locate snapshots.
 
 The tab list and the context are session.py's; what the agent is shown is observation.py's.
 """
