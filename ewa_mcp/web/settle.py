@@ -12,7 +12,9 @@ Two sources of truth, each bounded by what is left of one deadline:
   started it has returned.
 
 The hooks also count the popups a document asks for (window.open, links and forms with a
-target), so that the environment can wait for exactly that many new tabs.
+target), so that the environment can wait for exactly that many new tabs, and the changes made to
+the DOM (a MutationObserver), so that an action can tell whether the latest snapshot still shows
+the page and skip taking another.
 """
 
 from __future__ import annotations
@@ -56,7 +58,32 @@ PAGE_HOOKS_JS = """(() => {
     if (a && (opensWindow(a.target) || e.ctrlKey || e.metaKey || e.shiftKey || e.button === 1)) note();
   }, true);
   document.addEventListener('submit', (e) => { if (opensWindow(e.target.target)) note(); }, true);
+  // Every change to the DOM (shadow roots included) bumps a counter: a snapshot taken after the
+  // counter was read is still the page as it is while the counter reads the same (see changes()).
+  // Counting starts at the load event (observing the parser build a large page costs tens of ms);
+  // until then changes() answers null: unknown, so every snapshot is taken afresh.
+  const token = Math.random().toString(36).slice(2);  // counts of two documents never compare equal
+  let changes = 0, watching = false;
+  const early = [];  // shadow roots attached before the load event
+  const options = {subtree: true, childList: true, attributes: true, characterData: true};
+  const observer = new MutationObserver(() => { changes++; });
+  const watch = (root) => { if (watching) observer.observe(root, options); else early.push(root); };
+  const begin = () => {
+    if (watching) return;
+    watching = true;
+    observer.observe(document, options);
+    early.splice(0).forEach((root) => observer.observe(root, options));
+  };
+  if (document.readyState === 'complete') begin(); else window.addEventListener('load', begin, {once: true});
+  const attachShadow = Element.prototype.attachShadow;
+  Element.prototype.attachShadow = function (...args) { const root = attachShadow.apply(this, args); watch(root); return root; };
   Object.defineProperty(window, '__ewa', {value: {
+    // Mutation records are delivered as a microtask: take them now so that none is pending.
+    changes() {
+      if (!watching) return null;
+      if (observer.takeRecords().length) changes++;
+      return token + ':' + changes;
+    },
     // Resolves [settled, popups asked for, had work] once this action's requests are done and a
     // macrotask has let their callbacks run (a callback may start more work: then wait again).
     idle(ms) {
@@ -79,6 +106,9 @@ PAGE_HOOKS_JS = """(() => {
   }});
 })();"""
 IDLE_JS = "(ms) => Promise.resolve(window.__ewa ? window.__ewa.idle(ms) : [true, 0, false])"
+# The page's DOM-change count ("<document token>:<count>"), or null where the hooks are not
+# installed (about:blank, error pages) or the document has not reached its load event.
+CHANGES_JS = "(window.__ewa ? window.__ewa.changes() : null)"
 
 
 class PageActivity:

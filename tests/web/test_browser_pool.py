@@ -17,9 +17,17 @@ pytestmark = [pytest.mark.anyio, pytest.mark.browser]
 
 
 async def _pool(web_services):
+    await _landed(web_services)
     pool = web_services.peek("chromium").pool
     await pool.aclose()  # start from an empty pool whatever earlier tests left idle
     return pool
+
+
+async def _landed(web_services):
+    """Wait until every context handed back (in the background, see session.py) is in the pool."""
+    handovers = web_services.peek("web-handovers")
+    if handovers is not None:
+        await handovers.drain()
 
 
 async def test_next_episode_gets_the_warm_page_with_nothing_of_the_last(web_services):
@@ -31,6 +39,7 @@ async def test_next_episode_gets_the_warm_page_with_nothing_of_the_last(web_serv
     await kept.evaluate("document.cookie = 'k=v; path=/'; localStorage.setItem('k', 'l'); "
                         "sessionStorage.setItem('k', 's')")
     await a.close()
+    await _landed(web_services)
     assert pool.idle() == 1
 
     reused = pool.reused
@@ -53,6 +62,7 @@ async def test_next_episode_gets_the_warm_page_with_nothing_of_the_last(web_serv
     await b.tab_focus(0)
     await b.close_tab()  # closes the warm page itself: the page to hand on is now the other tab's
     await b.close()
+    await _landed(web_services)
     assert pool.idle() == 1 and b.context is None and not b.tabs
     c = await open_env(web_services, "fixture:/item/5", episode_id="ep-pool-b2")
     assert pool.reused == reused + 2 and [t["site_url"] for t in (await c.observe()).data["tabs"]] == ["fixture:/item/5"]
