@@ -133,6 +133,7 @@ async def _open_and_close(web_services, n: int, prefix: str) -> None:
     envs = [await open_env(web_services, f"fixture:/item/{i + 1}", episode_id=f"{prefix}-{i}") for i in range(n)]
     for env in envs:
         await env.close()
+    await _landed(web_services)  # hand-backs run in the background: wait until the contexts are in the pool
 
 
 async def test_idle_contexts_beyond_keep_idle_are_closed_after_the_idle_period(web_services):
@@ -182,6 +183,7 @@ async def test_concurrent_hand_overs_never_overfill_the_pool(web_services):
     try:
         envs = [await open_env(web_services, "fixture:/", episode_id=f"ep-fill-{i}") for i in range(4)]
         await asyncio.gather(*(env.close() for env in envs))  # all scrubbing at the same time
+        await _landed(web_services)
         assert pool.idle() == 2
     finally:
         pool.max_idle = 8
