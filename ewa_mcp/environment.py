@@ -10,12 +10,12 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, ClassVar, Literal
 
-from mcp.server.mcpserver.exceptions import ToolError
 
 
-class EnvError(ToolError):
+class EnvError(Exception):
     """An action the environment refused. The message names the problem and how to fix it;
-    the environment's state is unchanged."""
+    the environment's state is unchanged. Environments know nothing of MCP: the episode manager
+    turns this into the tool error the client sees (``EpisodeManager.act`` and ``start``)."""
 
 
 @dataclass

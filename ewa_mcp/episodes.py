@@ -19,7 +19,7 @@ import anyio
 from mcp.server.mcpserver.exceptions import ToolError
 
 from . import registry
-from .environment import Environment, Observation
+from .environment import EnvError, Environment, Observation
 from .records import EpisodeRecorder
 from .services import Services
 from .taskmodel import SCHEMA_VERSION, Task, TaskStore
@@ -171,11 +171,13 @@ class EpisodeManager:
                 env = cls(episode, self.services)
                 episode.environments[kind] = env
                 await env.reset(task, options)
-        except BaseException:
+        except BaseException as exc:
             for env in episode.environments.values():
                 with anyio.CancelScope(shield=True):
                     await env.close()
             recorder.close()
+            if isinstance(exc, EnvError):
+                raise ToolError(str(exc)) from exc
             raise
         if episode.active not in episode.environments and episode.environments:
             episode.active = next(iter(episode.environments))
@@ -252,6 +254,9 @@ class EpisodeManager:
             except ToolError as exc:
                 error = str(exc)
                 raise
+            except EnvError as exc:  # the environment refused: the client sees the message as a tool error
+                error = str(exc)
+                raise ToolError(error) from exc
             except Exception as exc:  # an environment bug: report it, keep the server alive
                 error = f"internal error in {tool}: {type(exc).__name__}: {exc}"
                 raise ToolError(error) from exc
