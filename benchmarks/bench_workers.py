@@ -1,0 +1,72 @@
+"""Episodes per minute with 1 and with N worker processes (`ewa-mcp eval --workers`), oracle agent, graded.
+
+    .venv/bin/python benchmarks/bench_workers.py [--sample 20] [--workers 2] [--concurrency 1] [--rounds 1]
+
+Both sides go through the same worker-process driver (evaluation/workers.py), so each pays for its
+processes' start (Python, the MCP SDK, Chromium, the sites) inside its wall time. Rounds alternate the order
+(1, N, N, 1, ...) so a change in the machine's other load does not favour one side. Prints JSON: per run the
+wall time, episodes/min, accuracy and the 1-minute load average before and after; then the ratio of the
+summed rates. Target (issue 18): 2 workers >= 1.7x one worker on a 2-core machine.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import shutil
+import tempfile
+import time
+from pathlib import Path
+
+from ewa_mcp.evaluation.agents import OracleAgent
+from ewa_mcp.evaluation.runner import select_tasks
+from ewa_mcp.evaluation.workers import play_in_processes
+from ewa_mcp.graders import grade_run
+from ewa_mcp.paths import tasks_dir
+from ewa_mcp.taskmodel import TaskStore
+
+
+def one(tasks, workers: int, concurrency: int) -> dict:
+    run_dir = Path(tempfile.mkdtemp(prefix=f"ewa-bench-workers{workers}-"))
+    load_before = os.getloadavg()[0]
+    t0 = time.monotonic()
+    summary = play_in_processes(tasks, OracleAgent(), workers=workers, concurrency=concurrency, run_dir=run_dir,
+                                task_dirs=[tasks_dir()], progress=False)
+    seconds = time.monotonic() - t0
+    load_after = os.getloadavg()[0]
+    report = grade_run(run_dir)
+    solved = sum(bool(e.overall_success) for e in report.episodes)
+    shutil.rmtree(run_dir, ignore_errors=True)
+    return {"workers": workers, "concurrency": concurrency, "episodes": len(report.episodes),
+            "could_not_play": sum(o.failure is not None for o in summary.outcomes),
+            "solved": solved, "seconds": round(seconds, 1),
+            "episodes_per_minute": round(len(tasks) / seconds * 60, 1),
+            "load_average_1min": [round(load_before, 2), round(load_after, 2)]}
+
+
+def main() -> None:
+    p = argparse.ArgumentParser()
+    p.add_argument("--sample", type=int, default=20, help="tasks per domain (default 20)")
+    p.add_argument("--domain", action="append", help="restrict to a domain (repeatable)")
+    p.add_argument("--workers", type=int, default=2, help="the N compared with 1 (default 2)")
+    p.add_argument("--concurrency", type=int, default=1, help="episodes at once in each worker")
+    p.add_argument("--rounds", type=int, default=1, help="pairs of runs, order alternating")
+    args = p.parse_args()
+    tasks = [t for t in select_tasks(TaskStore([tasks_dir()]), None, args.sample, args.domain) if t.domain != "demo"]
+    runs = []
+    for r in range(args.rounds):
+        order = (1, args.workers) if r % 2 == 0 else (args.workers, 1)
+        for n in order:
+            runs.append(one(tasks, n, args.concurrency))
+            print(json.dumps(runs[-1]), flush=True)
+    rate = {n: sum(x["episodes_per_minute"] for x in runs if x["workers"] == n) / args.rounds
+            for n in (1, args.workers)}
+    print(json.dumps({"benchmark": "eval worker processes", "tasks": len(tasks), "cpus": os.cpu_count(),
+                      "episodes_per_minute": {str(n): round(v, 1) for n, v in rate.items()},
+                      f"ratio_{args.workers}_to_1": round(rate[args.workers] / rate[1], 2),
+                      "runs": runs}, indent=2))
+
+
+if __name__ == "__main__":
+    main()
