@@ -6,7 +6,9 @@ Both sides go through the same worker-process driver (evaluation/workers.py), so
 processes' start (Python, the MCP SDK, Chromium, the sites) inside its wall time. Rounds alternate the order
 (1, N, N, 1, ...) so a change in the machine's other load does not favour one side. Prints JSON: per run the
 wall time, episodes/min, accuracy and the 1-minute load average before and after; then the ratio of the
-summed rates. Target (issue 18): 2 workers >= 1.7x one worker on a 2-core machine.
+summed rates. Target (issue 18): 2 workers >= 1.7x one worker on a 2-core machine. Each run also prints
+the whole suite's minutes at its pace (its wall time scaled by the suite's episode time per domain over the
+sample's; target: <= 7 with 2 workers).
 """
 
 from __future__ import annotations
@@ -27,7 +29,18 @@ from ewa_mcp.paths import tasks_dir
 from ewa_mcp.taskmodel import TaskStore
 
 
-def one(tasks, workers: int, concurrency: int) -> dict:
+def suite_minutes(summary, seconds: float, suite: dict[str, int]) -> float:
+    """The whole suite's wall time at this run's pace: the run's wall time scaled by how much more episode time
+    the suite holds, domain by domain (a sample has 20 of each domain; the suite is half cooking)."""
+    busy: dict[str, list[float]] = {}
+    for o in summary.outcomes:
+        busy.setdefault(o.domain, []).append(o.seconds)
+    sample_work = sum(sum(v) for v in busy.values())
+    suite_work = sum(suite[d] * sum(v) / len(v) for d, v in busy.items())
+    return seconds * suite_work / sample_work / 60
+
+
+def one(tasks, workers: int, concurrency: int, suite: dict[str, int]) -> dict:
     run_dir = Path(tempfile.mkdtemp(prefix=f"ewa-bench-workers{workers}-"))
     load_before = os.getloadavg()[0]
     t0 = time.monotonic()
@@ -42,6 +55,7 @@ def one(tasks, workers: int, concurrency: int) -> dict:
             "could_not_play": sum(o.failure is not None for o in summary.outcomes),
             "solved": solved, "seconds": round(seconds, 1),
             "episodes_per_minute": round(len(tasks) / seconds * 60, 1),
+            "whole_suite_minutes_at_this_pace": round(suite_minutes(summary, seconds, suite), 1),
             "load_average_1min": [round(load_before, 2), round(load_after, 2)]}
 
 
@@ -53,12 +67,14 @@ def main() -> None:
     p.add_argument("--concurrency", type=int, default=1, help="episodes at once in each worker")
     p.add_argument("--rounds", type=int, default=1, help="pairs of runs, order alternating")
     args = p.parse_args()
-    tasks = [t for t in select_tasks(TaskStore([tasks_dir()]), None, args.sample, args.domain) if t.domain != "demo"]
+    store = TaskStore([tasks_dir()])
+    tasks = [t for t in select_tasks(store, None, args.sample, args.domain) if t.domain != "demo"]
+    suite = {d: len(store.all(d)) for d in {t.domain for t in tasks}}
     runs = []
     for r in range(args.rounds):
         order = (1, args.workers) if r % 2 == 0 else (args.workers, 1)
         for n in order:
-            runs.append(one(tasks, n, args.concurrency))
+            runs.append(one(tasks, n, args.concurrency, suite))
             print(json.dumps(runs[-1]), flush=True)
     rate = {n: sum(x["episodes_per_minute"] for x in runs if x["workers"] == n) / args.rounds
             for n in (1, args.workers)}

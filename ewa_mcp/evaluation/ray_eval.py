@@ -186,6 +186,10 @@ class _RayDriver:
             for number in list(self.actors):
                 self.feed(number)
             while not self.ledger.complete:
+                if not self.calls:  # nothing in flight and tasks left: no actor can take them
+                    for outcome in self.ledger.abandon("no Ray actor left to play it"):
+                        self.record(outcome)
+                    break
                 ready, _ = ray.wait(list(self.calls), num_returns=1, timeout=5)
                 for ref in ready:
                     if ref not in self.calls:
@@ -196,6 +200,11 @@ class _RayDriver:
                     except ray.exceptions.RayActorError as exc:
                         self.lose(number, exc)
                         continue
+                    except ray.exceptions.RayError as exc:  # the call failed, the actor lives: one failed episode
+                        task = self.tasks[slot]
+                        outcome_fields = {"task_id": task.id, "domain": task.domain, "episode_id": None,
+                                          "failure": f"{type(exc).__name__}: {str(exc).strip()[-300:]}"}
+                        files = {}
                     outcome = EpisodeOutcome(**outcome_fields)
                     if self.ledger.finish(number, slot, outcome):
                         if outcome.episode_id:

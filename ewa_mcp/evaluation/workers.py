@@ -57,7 +57,11 @@ def _worker_main(wid: int, agent_blob: bytes, transport: str, task_dirs: list[Pa
     outbox.put(("ready", wid))
 
     def run(slot: int, task: Task) -> None:
-        outcome = player.play(task, on_start=lambda episode_id: outbox.put(("start", wid, slot, episode_id)))
+        try:
+            outcome = player.play(task, on_start=lambda episode_id: outbox.put(("start", wid, slot, episode_id)))
+        except BaseException as exc:  # noqa: BLE001 - the driver must hear about every slot it handed out
+            outcome = EpisodeOutcome(task_id=task.id, domain=task.domain, episode_id=None,
+                                     failure=f"{type(exc).__name__}: {str(exc)[:300]}")
         outbox.put(("done", wid, slot, asdict(outcome)))
 
     try:

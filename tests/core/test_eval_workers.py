@@ -60,19 +60,10 @@ def one_process_grades(tmp_path_factory):
     return grades(run_dir)
 
 
-def test_two_workers_land_every_episode_once(tmp_path, one_process_grades):
-    tasks = small_tasks()
-    summary = play_in_processes(tasks, OracleAgent(), workers=2, concurrency=2, run_dir=tmp_path,
-                                task_dirs=[tasks_dir()], progress=False)
-    assert not [o.failure for o in summary.outcomes if o.failure]
-    assert sorted(o.task_id for o in summary.outcomes) == sorted(t.id for t in tasks)
-    assert landed(tmp_path) == Counter(t.id for t in tasks)
-    assert all((d / "final_state.json").exists() for d in tmp_path.iterdir())
-    assert not (tmp_path / STAGING).exists()
-    assert grades(tmp_path) == one_process_grades
-
-
-def test_a_killed_worker_has_its_episode_played_again(tmp_path, one_process_grades):
+def test_two_workers_land_each_episode_once_even_when_one_is_killed(tmp_path, one_process_grades):
+    """Every task's episode lands exactly once and grades as in one process; the episode a killed worker was
+    playing is played again by another, and its partial record (open in the dead worker's staging folder)
+    never reaches the run directory."""
     tasks = small_tasks()
     target = tasks[len(tasks) // 2].id
     marker = tmp_path / "stalled.pid"
@@ -80,8 +71,9 @@ def test_a_killed_worker_has_its_episode_played_again(tmp_path, one_process_grad
     result = {}
 
     def drive():
-        result["summary"] = play_in_processes(tasks, StallOnce(target, marker), workers=2, run_dir=run_dir,
-                                              task_dirs=[tasks_dir()], progress=False)
+        # Two episodes at once in each worker: the killed one holds the stalled episode and maybe another.
+        result["summary"] = play_in_processes(tasks, StallOnce(target, marker), workers=2, concurrency=2,
+                                              run_dir=run_dir, task_dirs=[tasks_dir()], progress=False)
 
     driver = threading.Thread(target=drive)
     driver.start()
@@ -99,6 +91,7 @@ def test_a_killed_worker_has_its_episode_played_again(tmp_path, one_process_grad
     assert not [o.failure for o in summary.outcomes if o.failure]
     assert sorted(o.task_id for o in summary.outcomes) == sorted(t.id for t in tasks)
     assert landed(run_dir) == Counter(t.id for t in tasks)
+    assert all((d / "final_state.json").exists() for d in run_dir.iterdir())
     assert not (run_dir / STAGING).exists()
     assert grades(run_dir) == one_process_grades
 
@@ -124,3 +117,34 @@ def test_ledger_accepts_each_slot_once_and_takes_back_a_lost_workers_slots():
     assert given_up.task_id == tasks[a].id and "died 2 times" in given_up.failure
     c = ledger.take("c")
     assert ledger.finish("c", c, object()) and ledger.complete
+
+
+def scale_args(*argv):
+    from ewa_mcp.cli import build_parser
+    from ewa_mcp.evaluation.scale import scale_options
+
+    return scale_options(build_parser().parse_args(["eval", *argv]))
+
+
+def test_scale_options_read_and_refuse_with_the_fix():
+    assert scale_args().workers == 1 and scale_args().ray is None
+    opts = scale_args("--workers", "3", "--concurrency", "2")
+    assert (opts.workers, opts.concurrency) == (3, 2)
+    assert scale_args("--ray").ray.address is None  # Ray's own rule: RAY_ADDRESS, the local cluster, a new one
+    ray = scale_args("--ray", "head:6379", "--ray-actors", "4", "--ray-num-cpus", "2").ray
+    assert (ray.address, ray.actors, ray.num_cpus) == ("head:6379", 4, 2.0)
+    for argv, fix in [(["--workers", "0"], "at least 1"), (["--concurrency", "0"], "at least 1"),
+                      (["--ray", "--workers", "2"], "--ray-actors"), (["--ray-actors", "2"], "needs --ray"),
+                      (["--ray", "--ray-num-cpus", "0"], "positive")]:
+        with pytest.raises(EvalError, match=fix):
+            scale_args(*argv)
+
+
+def test_ray_is_not_imported_unless_asked_for():
+    import subprocess
+    import sys
+
+    code = ("import sys, ewa_mcp.cli, ewa_mcp.evaluation.runner, ewa_mcp.evaluation.workers, "
+            "ewa_mcp.evaluation.scale; ewa_mcp.cli.build_parser(); print('ray' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert out.stdout.strip() == "False", out.stderr[-500:]
