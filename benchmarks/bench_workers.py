@@ -5,8 +5,8 @@
 Both sides go through the same worker-process driver (evaluation/workers.py), so each pays for its
 processes' start (Python, the MCP SDK, Chromium, the sites) inside its wall time. Rounds alternate the order
 (1, N, N, 1, ...) so a change in the machine's other load does not favour one side. Prints JSON: per run the
-wall time, episodes/min, accuracy and the 1-minute load average before and after; then the ratio of the
-summed rates. Target (issue 18): 2 workers >= 1.7x one worker on a 2-core machine. Each run also prints
+wall time, episodes/min, accuracy, the 1-minute load average before and after, and the CPU the run's
+processes used (cores used; CPU seconds per episode); then the ratio of the summed rates. Target (issue 18): 2 workers >= 1.7x one worker on a 2-core machine. Each run also prints
 the whole suite's minutes at its pace (its wall time scaled by the suite's episode time per domain over the
 sample's; target: <= 7 with 2 workers).
 """
@@ -16,6 +16,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import resource
 import shutil
 import tempfile
 import time
@@ -27,6 +28,11 @@ from ewa_mcp.evaluation.workers import play_in_processes
 from ewa_mcp.graders import grade_run
 from ewa_mcp.paths import tasks_dir
 from ewa_mcp.taskmodel import TaskStore
+
+
+def cpu_seconds() -> float:
+    own, reaped = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+    return own.ru_utime + own.ru_stime + reaped.ru_utime + reaped.ru_stime
 
 
 def suite_minutes(summary, seconds: float, suite: dict[str, int]) -> float:
@@ -43,10 +49,12 @@ def suite_minutes(summary, seconds: float, suite: dict[str, int]) -> float:
 def one(tasks, workers: int, concurrency: int, suite: dict[str, int]) -> dict:
     run_dir = Path(tempfile.mkdtemp(prefix=f"ewa-bench-workers{workers}-"))
     load_before = os.getloadavg()[0]
+    cpu_before = cpu_seconds()
     t0 = time.monotonic()
     summary = play_in_processes(tasks, OracleAgent(), workers=workers, concurrency=concurrency, run_dir=run_dir,
                                 task_dirs=[tasks_dir()], progress=False)
     seconds = time.monotonic() - t0
+    cpu = cpu_seconds() - cpu_before
     load_after = os.getloadavg()[0]
     report = grade_run(run_dir)
     solved = sum(bool(e.overall_success) for e in report.episodes)
@@ -56,6 +64,9 @@ def one(tasks, workers: int, concurrency: int, suite: dict[str, int]) -> dict:
             "solved": solved, "seconds": round(seconds, 1),
             "episodes_per_minute": round(len(tasks) / seconds * 60, 1),
             "whole_suite_minutes_at_this_pace": round(suite_minutes(summary, seconds, suite), 1),
+            # CPU of the driver, the workers and what they reaped (Playwright's node, Chromium): how many cores
+            # the run got, and what one episode costs whatever else runs on the machine.
+            "cores_used": round(cpu / seconds, 2), "cpu_seconds_per_episode": round(cpu / len(tasks), 3),
             "load_average_1min": [round(load_before, 2), round(load_after, 2)]}
 
 

@@ -211,7 +211,9 @@ class _Driver:
             for worker in self.workers.values():
                 if worker.process.is_alive():
                     worker.process.terminate()
-        shutil.rmtree(self.staging_root, ignore_errors=True)
+                    worker.process.join(timeout=10)
+            # What is left there was never accepted (an interrupted run): the run directory stays accepted-only.
+            shutil.rmtree(self.staging_root, ignore_errors=True)
         self.summary.seconds = time.monotonic() - t0
         return self.summary
 
