@@ -1,6 +1,6 @@
 """`ewa-mcp eval --workers N`: episodes spread over N processes, each with its own server, browser and sites.
 
-One process drives: it hands tasks to the workers (at most `concurrency` each at a time), collects their
+One process drives: it hands tasks to the workers (`concurrency` playing and one waiting each), collects their
 outcomes and owns the run directory. A worker's server records into a staging folder of its own
 (`<run>/.staging/w<k>/`); when the driver accepts an episode's outcome it renames the episode's folder into the
 run directory (an atomic move on one file system). So the run directory only ever holds episodes the driver
@@ -114,7 +114,9 @@ class _Driver:
         self.workers[wid] = _Worker(wid, process, inbox, staging)
 
     def feed(self, worker: _Worker) -> None:
-        while worker.ready and not worker.stopping and self.ledger.held(worker.wid) < self.concurrency:
+        # One task more than the worker plays at once waits in its queue, so a worker that finishes an episode
+        # starts the next at once instead of waiting for the driver to be scheduled and answer.
+        while worker.ready and not worker.stopping and self.ledger.held(worker.wid) < self.concurrency + 1:
             slot = self.ledger.take(worker.wid)
             if slot is None:
                 return
