@@ -139,6 +139,7 @@ def cmd_tasks(args: argparse.Namespace) -> int:
 def cmd_eval(args: argparse.Namespace) -> int:
     from .evaluation.agents import NoopAgent, OracleAgent, RandomAgent, ReplayAgent, ReplayError, load_replay
     from .evaluation.runner import EvalError, play, run_dir_from, select_tasks, task_dirs_from
+    from .evaluation.scale import scale_options
     from .graders import grade_run, render_report
     from .taskmodel import TaskStore
 
@@ -160,10 +161,16 @@ def cmd_eval(args: argparse.Namespace) -> int:
         print(f"error: {exc}", file=sys.stderr)
         return 2
     run_dir = run_dir_from(args.run_dir)
-    print(f"{agent.name}: {len(tasks)} tasks, {args.workers} worker(s), {args.transport}; recording to {run_dir}",
-          file=sys.stderr)
-    summary = play(tasks, agent, run_dir=run_dir, task_dirs=task_dirs, transport=args.transport,
-                   workers=args.workers, progress=not args.quiet)
+    try:
+        scale = scale_options(args)
+        print(f"{agent.name}: {len(tasks)} tasks, {scale.describe()}, {args.transport}; recording to {run_dir}",
+              file=sys.stderr)
+        summary = play(tasks, agent, run_dir=run_dir, task_dirs=task_dirs, transport=args.transport,
+                       workers=scale.workers, concurrency=scale.concurrency, ray=scale.ray,
+                       progress=not args.quiet)
+    except EvalError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
     print(render_report(grade_run(run_dir), fmt=args.format))
     return 1 if any(o.failure for o in summary.outcomes) else 0
 
@@ -194,6 +201,25 @@ def cmd_demo(args: argparse.Namespace) -> int:
     from .demo import run_demo
 
     return run_demo()
+
+
+def add_scale_arguments(p: argparse.ArgumentParser) -> None:
+    """--workers, --concurrency and --ray (shared with the LLM agent examples)."""
+    g = p.add_argument_group("scale", "where episodes run (docs/scaling.md)")
+    g.add_argument("--workers", type=int, default=1, metavar="N",
+                   help="processes, each with its own server, browser and sites (default 1: this process)")
+    g.add_argument("--concurrency", type=int, default=None, metavar="K",
+                   help="episodes at once in each process or Ray actor (default 1; LLM agents waiting on a "
+                   "model want more)")
+    g.add_argument("--ray", nargs="?", const="", default=None, metavar="ADDRESS",
+                   help="play on Ray actors. ADDRESS: a cluster's (host:6379 on a cluster node, ray://host:10001 "
+                   "from outside), 'auto' (the cluster `ray start` made here) or 'local' (a new one-machine "
+                   "cluster); without it RAY_ADDRESS, else the cluster started here, else a new local one. "
+                   "Needs `pip install 'ewa-mcp[ray]'`")
+    g.add_argument("--ray-actors", type=int, default=None, metavar="N",
+                   help="Ray actors to start (default: the cluster's CPUs / --ray-num-cpus)")
+    g.add_argument("--ray-num-cpus", type=float, default=1.0, metavar="C",
+                   help="CPUs each Ray actor declares (its server, browser and sites; default 1)")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -244,7 +270,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--difficulty", action="append", choices=["easy", "medium", "hard"],
                    help="restrict to a difficulty (repeatable)")
     p.add_argument("--sample", type=int, metavar="N", help="N tasks per domain, chosen deterministically")
-    p.add_argument("--workers", type=int, default=1)
+    add_scale_arguments(p)
     p.add_argument("--transport", choices=["inprocess", "stdio", "http"], default="inprocess")
     p.add_argument("--run-dir", metavar="DIR")
     p.add_argument("--tasks-dir", action="append", metavar="DIR", help="task directory (default: tasks/)")

@@ -10,6 +10,7 @@ and plays each task; the run directory it leaves is graded with `ewa-grade RUN_D
 from __future__ import annotations
 
 import sys
+from dataclasses import dataclass
 from typing import Any
 
 import anthropic
@@ -53,14 +54,23 @@ class ClaudeAdapter:
         self.messages.append({"role": "user", "content": blocks})
 
 
+@dataclass
+class ClaudeAdapterFactory:
+    """Makes one adapter (and SDK client) per episode, inside the episode's event loop. A plain picklable
+    object, so the agent can go to worker processes (--workers) and Ray actors (--ray)."""
+
+    model: str
+    max_tokens: int
+    base_url: str | None = None
+
+    def __call__(self) -> ClaudeAdapter:
+        client = anthropic.AsyncAnthropic(base_url=self.base_url) if self.base_url else anthropic.AsyncAnthropic()
+        return ClaudeAdapter(client, self.model, self.max_tokens)
+
+
 def main(argv: list[str] | None = None) -> int:
     args = example_parser("Claude plays ewa-mcp tasks over MCP.", "claude-sonnet-4-5").parse_args(argv)
-    # One SDK client per episode, made and closed inside the episode's event loop.
-    def make_client() -> anthropic.AsyncAnthropic:
-        return anthropic.AsyncAnthropic(base_url=args.base_url) if args.base_url else anthropic.AsyncAnthropic()
-
-    agent = LLMAgent(lambda: ClaudeAdapter(make_client(), args.model, args.max_tokens),
-                     name=f"claude:{args.model}",
+    agent = LLMAgent(ClaudeAdapterFactory(args.model, args.max_tokens, args.base_url), name=f"claude:{args.model}",
                      send_images=not args.no_images)
     return run_example(args, agent)
 

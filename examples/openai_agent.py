@@ -9,6 +9,7 @@ Any server that speaks the Chat Completions wire format works with --base-url (v
 from __future__ import annotations
 
 import sys
+from dataclasses import dataclass
 from typing import Any
 
 import openai
@@ -59,14 +60,23 @@ class OpenAIAdapter:
                 *({"type": "image_url", "image_url": {"url": f"data:image/png;base64,{img}"}} for img in images)]})
 
 
+@dataclass
+class OpenAIAdapterFactory:
+    """Makes one adapter (and SDK client) per episode, inside the episode's event loop. A plain picklable
+    object, so the agent can go to worker processes (--workers) and Ray actors (--ray)."""
+
+    model: str
+    max_tokens: int
+    base_url: str | None = None
+
+    def __call__(self) -> OpenAIAdapter:
+        client = openai.AsyncOpenAI(base_url=self.base_url) if self.base_url else openai.AsyncOpenAI()
+        return OpenAIAdapter(client, self.model, self.max_tokens)
+
+
 def main(argv: list[str] | None = None) -> int:
     args = example_parser("An OpenAI model plays ewa-mcp tasks over MCP.", "gpt-4o").parse_args(argv)
-    # One SDK client per episode, made and closed inside the episode's event loop.
-    def make_client() -> openai.AsyncOpenAI:
-        return openai.AsyncOpenAI(base_url=args.base_url) if args.base_url else openai.AsyncOpenAI()
-
-    agent = LLMAgent(lambda: OpenAIAdapter(make_client(), args.model, args.max_tokens),
-                     name=f"openai:{args.model}",
+    agent = LLMAgent(OpenAIAdapterFactory(args.model, args.max_tokens, args.base_url), name=f"openai:{args.model}",
                      send_images=not args.no_images)
     return run_example(args, agent)
 

@@ -95,6 +95,9 @@ class LLMAgent:
 
     def __init__(self, adapter_factory: Callable[[], ModelAdapter], name: str = "llm", max_turns: int | None = None,
                  send_images: bool = True):
+        # adapter_factory() makes one adapter per episode. For --workers and --ray it travels to other
+        # processes, so make it picklable: a module-level class with __call__ (examples/*_agent.py) or a
+        # functools.partial, not a lambda.
         self.adapter_factory = adapter_factory
         self.name = name
         self.max_turns = max_turns
@@ -168,7 +171,9 @@ def example_parser(description: str, default_model: str):
                    help="restrict to a difficulty (repeatable)")
     p.add_argument("--sample", type=int, metavar="N", help="N tasks per domain")
     p.add_argument("--transport", choices=["inprocess", "stdio", "http"], default="stdio")
-    p.add_argument("--workers", type=int, default=1)
+    from ..cli import add_scale_arguments
+
+    add_scale_arguments(p)  # --workers, --concurrency, --ray: the agent's adapter factory must be picklable
     p.add_argument("--run-dir", metavar="DIR")
     p.add_argument("--tasks-dir", action="append", metavar="DIR")
     p.add_argument("--max-tokens", type=int, default=2048)
@@ -183,15 +188,18 @@ def run_example(args: Any, agent: LLMAgent) -> int:
 
     from ..taskmodel import TaskStore
     from .runner import EvalError, play, run_dir_from, select_tasks, task_dirs_from
+    from .scale import scale_options
 
     task_dirs = task_dirs_from(args.tasks_dir)
+    run_dir = run_dir_from(args.run_dir)
     try:
         tasks = select_tasks(TaskStore(task_dirs), args.tasks, args.sample, args.domain, args.difficulty)
+        scale = scale_options(args)
+        summary = play(tasks, agent, run_dir=run_dir, task_dirs=task_dirs, transport=args.transport,
+                       workers=scale.workers, concurrency=scale.concurrency, ray=scale.ray,
+                       progress=not args.quiet)
     except EvalError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    run_dir = run_dir_from(args.run_dir)
-    summary = play(tasks, agent, run_dir=run_dir, task_dirs=task_dirs, transport=args.transport,
-                   workers=args.workers, progress=not args.quiet)
     print(f"run directory: {run_dir}  (grade it: ewa-grade {run_dir})")
     return 1 if any(o.failure for o in summary.outcomes) else 0

@@ -8,10 +8,11 @@ import socket
 import subprocess
 import sys
 import time
+from collections.abc import Callable
 from contextlib import asynccontextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import anyio
 import httpx
@@ -19,6 +20,9 @@ from mcp import Client, StdioServerParameters
 
 from ..settings import child_server_env
 from ..taskmodel import Task, TaskStore
+
+if TYPE_CHECKING:
+    from .scale import RayOptions
 
 
 class EvalError(ValueError):
@@ -64,6 +68,21 @@ def _server_args(task_dirs: list[Path], run_dir: Path) -> list[str]:
     return args
 
 
+async def _wait_for_http(url: str, proc: subprocess.Popen, timeout: float = 60) -> None:
+    """Until the server at url answers (any status): polled without blocking the event loop."""
+    deadline = time.monotonic() + timeout
+    async with httpx.AsyncClient(timeout=1) as http:
+        while True:
+            try:
+                await http.get(url)
+                return
+            except httpx.TransportError:
+                if proc.poll() is not None or time.monotonic() > deadline:
+                    raise EvalError("the HTTP server did not start; run `ewa-mcp serve --transport http` "
+                                    "by hand to see why") from None
+                await anyio.sleep(0.1)
+
+
 @asynccontextmanager
 async def connect(transport: str, task_dirs: list[Path], run_dir: Path):
     """One MCP client session to a server that records into run_dir."""
@@ -84,16 +103,7 @@ async def connect(transport: str, task_dirs: list[Path], run_dir: Path):
                                  "--port", str(port)], stderr=subprocess.DEVNULL,
                                 env=child_server_env(os.environ))  # loopback: no token, not the caller's EWA_HOST/PORT
         try:
-            deadline = time.monotonic() + 60
-            while True:
-                try:
-                    httpx.get(f"http://127.0.0.1:{port}/mcp", timeout=1)
-                    break
-                except httpx.TransportError:
-                    if proc.poll() is not None or time.monotonic() > deadline:
-                        raise EvalError("the HTTP server did not start; run `ewa-mcp serve --transport http` "
-                                        "by hand to see why") from None
-                    await anyio.sleep(0.1)
+            await _wait_for_http(f"http://127.0.0.1:{port}/mcp", proc)
             async with Client(f"http://127.0.0.1:{port}/mcp") as client:
                 yield client
         finally:
@@ -142,10 +152,44 @@ class Progress:
             sys.stderr.flush()
 
 
-async def run_eval(tasks: list[Task], agent: Any, *, transport: str = "inprocess", workers: int = 1,
-                   run_dir: Path, task_dirs: list[Path], progress: bool = True) -> EvalSummary:
+async def play_episode(client: Any, task: Task, agent: Any,
+                       on_start: Callable[[str], None] | None = None) -> EpisodeOutcome:
+    """One episode of task played by agent over client; never raises (a broken episode is an outcome).
+
+    on_start(episode_id) is called as soon as the server has opened the episode's record."""
     from .agents import Session
 
+    t0 = time.monotonic()
+    outcome = EpisodeOutcome(task_id=task.id, domain=task.domain, episode_id=None)
+    try:
+        start = await client.call_tool("start_episode", {"task_id": task.id})
+        if start.is_error:
+            outcome.failure = "start_episode: " + " ".join(getattr(c, "text", "") for c in start.content)
+            return outcome
+        session = Session(client=client, task=task, episode_id=start.structured_content["episode_id"],
+                          start=start)
+        outcome.episode_id = session.episode_id
+        if on_start is not None:
+            on_start(session.episode_id)
+        await agent.play(session)
+        if not session.ended:  # make sure every episode leaves a final state
+            await session.call("finish_episode", {})
+        outcome.calls = len(session.log)
+        outcome.errors = sum(not entry["ok"] for entry in session.log)
+    except Exception as exc:  # one broken episode must not end the run
+        outcome.failure = f"{type(exc).__name__}: {exc}"
+    finally:
+        outcome.seconds = time.monotonic() - t0
+    return outcome
+
+
+async def run_eval(tasks: list[Task], agent: Any, *, transport: str = "inprocess", concurrency: int | None = None,
+                   run_dir: Path, task_dirs: list[Path], progress: bool = True,
+                   workers: int | None = None) -> EvalSummary:
+    """Every task played in this process over one client session, `concurrency` episodes at a time.
+
+    `workers` is the old name of `concurrency` (before --workers meant processes: evaluation/workers.py)."""
+    concurrency = max(1, concurrency or workers or 1)
     run_dir.mkdir(parents=True, exist_ok=True)
     summary = EvalSummary(run_dir=run_dir, agent=agent.name, transport=transport)
     bar = Progress(len(tasks), progress)
@@ -154,37 +198,15 @@ async def run_eval(tasks: list[Task], agent: Any, *, transport: str = "inprocess
 
     async with connect(transport, task_dirs, run_dir) as client:
 
-        async def play(task: Task) -> EpisodeOutcome:
-            t0 = time.monotonic()
-            outcome = EpisodeOutcome(task_id=task.id, domain=task.domain, episode_id=None)
-            try:
-                start = await client.call_tool("start_episode", {"task_id": task.id})
-                if start.is_error:
-                    outcome.failure = "start_episode: " + " ".join(getattr(c, "text", "") for c in start.content)
-                    return outcome
-                session = Session(client=client, task=task, episode_id=start.structured_content["episode_id"],
-                                  start=start)
-                outcome.episode_id = session.episode_id
-                await agent.play(session)
-                if not session.ended:  # make sure every episode leaves a final state
-                    await session.call("finish_episode", {})
-                outcome.calls = len(session.log)
-                outcome.errors = sum(not entry["ok"] for entry in session.log)
-            except Exception as exc:  # one broken episode must not end the run
-                outcome.failure = f"{type(exc).__name__}: {exc}"
-            finally:
-                outcome.seconds = time.monotonic() - t0
-            return outcome
-
-        async def worker() -> None:
+        async def lane() -> None:
             while queue:
-                outcome = await play(queue.pop())
+                outcome = await play_episode(client, queue.pop(), agent)
                 summary.outcomes.append(outcome)
                 bar.tick(outcome)
 
         async with anyio.create_task_group() as tg:
-            for _ in range(max(1, workers)):
-                tg.start_soon(worker)
+            for _ in range(concurrency):
+                tg.start_soon(lane)
     summary.seconds = time.monotonic() - started
     return summary
 
@@ -203,10 +225,26 @@ def run_dir_from(given: str | None, prefix: str = "") -> Path:
 
 
 def play(tasks: list[Task], agent: Any, *, run_dir: Path, task_dirs: list[Path], transport: str = "inprocess",
-         workers: int = 1, progress: bool = True) -> EvalSummary:
-    """Run the episodes (blocking) and report on stderr the ones that could not be played."""
-    summary = anyio.run(lambda: run_eval(tasks, agent, transport=transport, workers=workers, run_dir=run_dir,
-                                         task_dirs=task_dirs, progress=progress))
+         workers: int = 1, concurrency: int = 1, ray: "RayOptions | None" = None,
+         progress: bool = True) -> EvalSummary:
+    """Run the episodes (blocking) and report on stderr the ones that could not be played.
+
+    workers > 1: that many processes, each with its own server, browser and sites (evaluation/workers.py);
+    ray: actors on a Ray cluster (evaluation/ray_eval.py); otherwise this process. Each runs `concurrency`
+    episodes at a time."""
+    if ray is not None:
+        from .ray_eval import play_on_ray
+
+        summary = play_on_ray(tasks, agent, ray, run_dir=run_dir, task_dirs=task_dirs, transport=transport,
+                              concurrency=concurrency, progress=progress)
+    elif workers > 1:
+        from .workers import play_in_processes
+
+        summary = play_in_processes(tasks, agent, workers=workers, concurrency=concurrency, run_dir=run_dir,
+                                    task_dirs=task_dirs, transport=transport, progress=progress)
+    else:
+        summary = anyio.run(lambda: run_eval(tasks, agent, transport=transport, concurrency=concurrency,
+                                             run_dir=run_dir, task_dirs=task_dirs, progress=progress))
     failed = [o for o in summary.outcomes if o.failure]
     for o in failed[:10]:
         sys.stderr.write(f"  could not play {o.task_id}: {o.failure}\n")

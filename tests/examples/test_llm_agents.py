@@ -76,3 +76,31 @@ def test_example_agent_plays_a_task_oracle_over_stdio_and_scores_one(example, ke
     assert result.geolocation and all(result.geolocation.get(level) for level in ("continent", "country", "city"))
     tools = [json.loads(x)["tool"] for x in (episode / "trajectory.jsonl").read_text().splitlines()]
     assert tools == ["start_episode", *(call.tool for call in task.oracle)]
+
+
+@pytest.mark.parametrize("example, key", [("claude_agent", "ANTHROPIC_API_KEY"), ("openai_agent", "OPENAI_API_KEY")])
+def test_example_agent_plays_in_a_worker_process(example, key, tmp_path, monkeypatch):
+    """--workers: the agent (its adapter factory) is pickled into a worker process that plays the episode."""
+    monkeypatch.setenv(key, "test-key")
+    monkeypatch.syspath_prepend(str(REPO_ROOT / "examples"))  # the worker imports the example's factory class
+    from ewa_mcp.evaluation import workers
+
+    real, seen = workers.play_in_processes, []
+
+    def spy(tasks, agent, **kw):
+        seen.append(agent)
+        return real(tasks, agent, **kw)
+
+    monkeypatch.setattr(workers, "play_in_processes", spy)
+    module = load_example(example)
+    model = ScriptedModel(SCRIPT)
+    run_dir = tmp_path / "run"
+    with FakeLLMServer(model) as server:
+        base = server.url + ("" if example == "claude_agent" else "/v1")
+        rc = module.main(["--model", "scripted", "--base-url", base, "--tasks", "demo-hello",
+                          "--transport", "inprocess", "--workers", "2", "--run-dir", str(run_dir), "-q"])
+    assert rc == 0 and len(seen) == 1
+    (episode,) = [p for p in run_dir.iterdir() if p.is_dir()]
+    final = json.loads((episode / "final_state.json").read_text())
+    assert final["status"] == "finished" and final["answer"] == "hello"
+    assert len(model.requests) == 3  # the model was asked from the worker process, once per turn
