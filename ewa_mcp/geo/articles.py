@@ -21,6 +21,7 @@ import random
 import re
 import unicodedata
 from collections import defaultdict
+from collections.abc import Set as AbstractSet
 from pathlib import Path
 
 from . import gazetteer
@@ -61,7 +62,8 @@ def _existing_names(articles_root: Path) -> tuple[set[str], set[str]]:
     """(title keys, alias keys) of the articles outside the geo group."""
     from ewa_mcp.websites.wiki.store import read_articles
 
-    titles, aliases = set(), set()
+    titles: set[str] = set()
+    aliases: set[str] = set()
     articles, _problems = read_articles(articles_root)
     for article in articles:
         if article.group == GROUP:
@@ -140,7 +142,7 @@ def _fmt_int(value: int | float | str) -> str:
 
 
 def country_article(country: Country, cities: list[City], names: dict[str, str], aliases: list[str],
-                    extra: list[str], banned: set[str] = frozenset(), city_state: bool = False) -> str:
+                    extra: list[str], banned: AbstractSet[str] = frozenset(), city_state: bool = False) -> str:
     record = gazetteer.countries()[country.iso]
     continent = gazetteer.country_continent(country.iso)
     capital = CAPITAL_OVERRIDES.get(country.iso, record["capital"])
@@ -165,8 +167,8 @@ def country_article(country: Country, cities: list[City], names: dict[str, str],
     body = [f"**{title}** is a country in {continent}. Its capital is {capital_ref}."]
     body.append("## Street-level clues")
     if city_state:  # the article is the city's own: name the languages, quote no sign
-        names = [f"{language(c).name} ({language(c).script} script)" for c in country.langs]
-        body.append("- Shop and street signs are written in " + " and ".join(names) + ".")
+        language_names = [f"{language(c).name} ({language(c).script} script)" for c in country.langs]
+        body.append("- Shop and street signs are written in " + " and ".join(language_names) + ".")
     else:
         body += _words_line(country.langs)
     body.append(f"- Traffic drives on the **{country.drive}**.")
@@ -229,7 +231,7 @@ def view_words(city: City, locations: list[Location]) -> set[str]:
     return words - GENERIC_WORDS
 
 
-def without_view_words(text: str, banned: set[str]) -> str:
+def without_view_words(text: str, banned: AbstractSet[str]) -> str:
     """The sentences of ``text`` that quote none of the banned words."""
     sentences = re.split(r"(?<=[.!?])\s+", text.strip())
     return " ".join(s for s in sentences if s and not (words_of(s) & banned))

@@ -115,7 +115,9 @@ class GeoEnvironment(Environment):
         assert self.loc is not None
         want_text = self.mode in ("text", "both")
         want_images = self.mode in ("vision", "both")
-        views, images, lines = [], [], []
+        views: list[dict[str, Any]] = []
+        images: list[bytes] = []
+        lines: list[str] = []
         for heading in headings:
             spec = compose_view(self.loc, self.current, heading)
             view: dict[str, Any] = {"heading": heading}

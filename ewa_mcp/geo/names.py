@@ -185,11 +185,11 @@ def city_names(name: str, country: str, lat: float, lng: float) -> frozenset[str
     if best is not None:
         gazetteer_ids.add(best[1])
     for gid in gazetteer_ids:
-        record = gazetteer.cities().get(gid)
-        if record is None:
+        known = gazetteer.cities().get(gid)
+        if known is None:
             continue
-        accepted |= _city_variants(record["name"])
-        for alt in record["alternatenames"]:
+        accepted |= _city_variants(known["name"])
+        for alt in known["alternatenames"]:
             accepted |= _city_variants(alt)
     accepted.discard("")
     return frozenset(accepted)

@@ -265,17 +265,17 @@ def _render_along(img: Image.Image, spec: ViewSpec) -> None:
     for sign in spec.shops:
         i = per_side[sign.side]
         per_side[sign.side] += 1
-        side = -1 if sign.side == "left" else 1
+        side_sign = -1 if sign.side == "left" else 1
         z = 1.7 + i * 1.1
         u = 1 / z
-        xa, ya = _p(side * FACADE_X, 0.62, u)
-        xb, yb = _p(side * (FACADE_X - 0.42), 0.42, u)
+        xa, ya = _p(side_sign * FACADE_X, 0.62, u)
+        xb, yb = _p(side_sign * (FACADE_X - 0.42), 0.42, u)
         _sign_box(draw, (min(xa, xb), ya, max(xa, xb), yb), sign)
     for v in sorted(spec.vehicles, key=lambda v: -v.depth):
         vehicle_along(draw, _p, v)
     if spec.street_sign is not None:
-        side = -1 if spec.street_sign.side == "left" else 1
-        cx = W // 2 + side * 205
+        side_sign = -1 if spec.street_sign.side == "left" else 1
+        cx = W // 2 + side_sign * 205
         n = len(spec.street_sign.lines)
         _street_sign_box(draw, (cx - 85, 120, cx + 85, 120 + 22 * n + 10), spec.street_sign)
 

@@ -11,7 +11,7 @@ the target is.
 from __future__ import annotations
 
 from functools import lru_cache
-from typing import Any, Literal
+from typing import Any, Literal, TypedDict
 
 from ..environment import Environment, EnvError, Observation
 from ..geometry import angle_diff, cardinal, haversine_m
@@ -28,6 +28,14 @@ SECTORS: dict[str, tuple[float, float]] = {  # relative heading ranges (degrees,
 LABELS = ["forward", "forward-right", "right", "back-right", "back", "back-left", "left", "forward-left"]
 RELATIVE_VIEWS = [("front", 0.0), ("right", 90.0), ("back", 180.0), ("left", 270.0)]
 ABSOLUTE_VIEWS = [("north", 0.0), ("east", 90.0), ("south", 180.0), ("west", 270.0)]
+
+
+class ViewData(TypedDict):
+    """One view of an observation's ``data["views"]``."""
+
+    view: str  # front/right/back/left or north/east/south/west
+    heading: float  # compass bearing, rounded to 0.1 degree
+    description: str
 
 
 def sector_of(rel: float) -> str:
@@ -173,7 +181,7 @@ class StreetEnvironment(Environment):
         if here:
             # one place per line: "Right here: on your left, …" / "Also here: on your right, …"
             lines += [("Right here: " if i == 0 else "Also here: ") + item for i, item in enumerate(here)]
-        view_data = []
+        view_data: list[ViewData] = []
         images: list[bytes] = []
         for label, heading in self.views(frame):
             scene = compute_scene(self.world, g, self.node, heading, label)

@@ -91,10 +91,10 @@ def build_graph(spec: CitySpec) -> dict:
     lats = [p[0] for w in spec.ways for p in w.points]
     lngs = [p[1] for w in spec.ways for p in w.points]
     frame = LocalFrame(round((min(lats) + max(lats)) / 2, 5), round((min(lngs) + max(lngs)) / 2, 5))
-    ways = []
-    for w in spec.ways:
-        xy = [frame.to_xy(*p) for p in w.points]
-        ways.append(_Way(w.name, xy, _cumulative(xy)))
+    ways: list[_Way] = []
+    for spec_way in spec.ways:
+        xy = [frame.to_xy(*p) for p in spec_way.points]
+        ways.append(_Way(spec_way.name, xy, _cumulative(xy)))
 
     junctions: list[list[float]] = []  # [x, y]
 
@@ -139,7 +139,7 @@ def build_graph(spec: CitySpec) -> dict:
                 B.cuts.append((B.cum[sb] + u * (B.cum[sb + 1] - B.cum[sb]), j))
 
     # Densify every piece between consecutive cuts.
-    positions: list[tuple[float, float]] = [tuple(j) for j in junctions]
+    positions: list[tuple[float, float]] = [(jx, jy) for jx, jy in junctions]
     edges: dict[tuple[int, int], str] = {}
     for w in ways:
         cuts = sorted({(round(s, 3), j) for s, j in w.cuts})

@@ -266,7 +266,7 @@ def build_city(envs: list[Environment], city: str, name: str, report: ImportRepo
         rep_id[root] = nid
         position[nid] = (lat, lng)
         keys = sorted({recs[m][1] for m in members})
-        pano_ids = sorted({recs[m][4] for m in members if recs[m][4]})
+        pano_ids = sorted({pano for m in members if (pano := recs[m][4])})
         aliases[nid] = keys
         panos[nid] = pano_ids
         if len(keys) > 1 or len(pano_ids) > 1:

@@ -71,11 +71,23 @@ def _text(value: Any) -> str | None:
     return value[:200]
 
 
+def _dict_field(record: dict[Any, Any], name: str) -> dict[Any, Any]:
+    """``record[name]`` when it is a JSON object, else an empty one."""
+    value = record.get(name)
+    return value if isinstance(value, dict) else {}
+
+
+def _str_field(record: dict[Any, Any], name: str) -> str:
+    """``record[name]`` when it is a string, else an empty one."""
+    value = record.get(name)
+    return value if isinstance(value, str) else ""
+
+
 def parse_annotation(raw: Any) -> Annotation:
     ann = Annotation()
     if not isinstance(raw, dict):
         return ann
-    general = raw.get("general") if isinstance(raw.get("general"), dict) else {}
+    general = _dict_field(raw, "general")
     embodied = [e for e in raw.get("embodied") or [] if isinstance(e, dict)]
     web = [w for w in raw.get("web") or [] if isinstance(w, dict)]
     ann.task_type = _text(general.get("task_type"))
@@ -89,8 +101,8 @@ def parse_annotation(raw: Any) -> Annotation:
             setattr(ann, text_attr, _text(value))
     ann.general_name = _text(general.get("generated_name"))
     for w in web:
-        template = w.get("intent_template") if isinstance(w.get("intent_template"), str) else ""
-        values = w.get("instantiation_dict") if isinstance(w.get("instantiation_dict"), dict) else {}
+        template = _str_field(w, "intent_template")
+        values = _dict_field(w, "instantiation_dict")
         for var, value in values.items():
             slot = r"\{\{\s*" + re.escape(str(var)) + r"\s*\}\}"
             if re.search(r"\bto (the )?" + slot, template) and _text(value):
@@ -117,7 +129,7 @@ def read_annotations(path: Path) -> dict[str, Annotation]:
         raise ImportFormatError(f"annotations {path}: expected a list (or a mapping) of task annotations")
     out = {}
     for i, entry in enumerate(raw):
-        general = entry.get("general") if isinstance(entry, dict) and isinstance(entry.get("general"), dict) else {}
+        general = _dict_field(entry, "general") if isinstance(entry, dict) else {}
         task_id = general.get("task_id", i)
         out[str(task_id if isinstance(task_id, int | str) else i)] = parse_annotation(entry)
     return out
@@ -263,10 +275,10 @@ def plan(envs: list[Environment], build: CityBuild, annotations: dict[str, Annot
 def _key_distance(env: Environment) -> float | None:
     from .importer import node_position
 
-    ends = [env.nodes.get(str(k)) for k in (env.source, env.target)]
-    if str(env.source) == str(env.target) or not all(isinstance(e, dict) for e in ends):
+    start, end = env.nodes.get(str(env.source)), env.nodes.get(str(env.target))
+    if str(env.source) == str(env.target) or not isinstance(start, dict) or not isinstance(end, dict):
         return None
-    a, b = node_position(str(env.source), ends[0]), node_position(str(env.target), ends[1])
+    a, b = node_position(str(env.source), start), node_position(str(env.target), end)
     return haversine_m(*a, *b) if a and b else None
 
 
@@ -341,8 +353,9 @@ def import_file(path: Path, out: Path, annotations_path: Path | None = None, *, 
             report.skip(label, str(exc))
     if annotations_path is None and find:
         annotations_path = find_annotations(path)
-    annotations = read_annotations(annotations_path) if annotations_path else None
-    if annotations is not None:
+    annotations: dict[str, Annotation] | None = None
+    if annotations_path is not None:
+        annotations = read_annotations(annotations_path)
         missing = [e.label for e in envs if e.label not in annotations]
         if missing:
             report.notes.append(f"{len(missing)} environments have no annotation in {annotations_path.name} "

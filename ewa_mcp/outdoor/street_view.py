@@ -247,14 +247,19 @@ def _sky_and_ground(draw: ImageDraw.ImageDraw, cam: Camera) -> None:
     draw.rectangle([0, h, cam.width, cam.height], fill=SIDEWALK)
 
 
+def _hazed(rgb: tuple[int, int, int]) -> tuple[int, int, int]:
+    """The colour seen through atmospheric haze (a far skyline)."""
+    r, g, b = (int(c * 0.55 + 140 * 0.45) for c in rgb)
+    return r, g, b
+
+
 def _skyline(draw: ImageDraw.ImageDraw, scene: Scene, cam: Camera) -> None:
     for item in scene.skyline:
         x = cam.screen_x(item.rel_angle)
         top = cam.horizon - min(cam.horizon - 4, item.height_m * cam.focal / item.distance_m)
         half = max(3.0, 40.0 * cam.focal / item.distance_m)
         key = _style_key(item.style)
-        colour = STYLE_PALETTES.get(key, ((150, 160, 172), (0, 0, 0)))[0]
-        colour = tuple(int(c * 0.55 + 140 * 0.45) for c in colour)  # atmospheric haze
+        colour = _hazed(STYLE_PALETTES.get(key, ((150, 160, 172), (0, 0, 0)))[0])
         if key == "art deco":
             draw.rectangle([x - half, top + (cam.horizon - top) * 0.25, x + half, cam.horizon], fill=colour)
             draw.rectangle([x - half * 0.6, top + (cam.horizon - top) * 0.1, x + half * 0.6, cam.horizon], fill=colour)
@@ -312,8 +317,8 @@ def render(scene: Scene, cam: Camera | None = None) -> Image.Image:
         road = [cam.project(-ROAD_HALF_M, 0, 2.0), cam.project(-ROAD_HALF_M, 0, far), cam.project(ROAD_HALF_M, 0, far),
                 cam.project(ROAD_HALF_M, 0, 2.0)]
         draw.polygon(road, fill=ROAD)
-        for z in range(4, int(far), 12):  # centre line dashes
-            draw.line([cam.project(0, 0, z), cam.project(0, 0, z + 5)], fill=LANE, width=2)
+        for dash_z in range(4, int(far), 12):  # centre line dashes
+            draw.line([cam.project(0, 0, dash_z), cam.project(0, 0, dash_z + 5)], fill=LANE, width=2)
         for o in scene.openings:  # cross streets: tarmac reaching out sideways
             for side in (("left", "right") if o.side == "both" else (o.side,)):
                 sgn = 1 if side == "right" else -1

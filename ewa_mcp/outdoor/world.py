@@ -368,12 +368,12 @@ class World:
             return out
         for c in cities:
             g = self.cities_by_name[c]
-            key = normalize_street(street, g.aliases)
-            on_street = g.street_nodes(key)
+            street_key = normalize_street(street, g.aliases)
+            on_street = g.street_nodes(street_key)
             rule = BLOCK_RULES.get(c)
             if not on_street or rule is None:
                 continue
-            block = rule(key, number)
+            block = rule(street_key, number)
             if block is None:
                 continue
             ends = []
@@ -387,8 +387,8 @@ class World:
             lat = g.lat[ends[0]] + f * (g.lat[ends[1]] - g.lat[ends[0]])
             lng = g.lng[ends[0]] + f * (g.lng[ends[1]] - g.lng[ends[0]])
             i = g.nearest(lat, lng, on_street)
-            canonical = next(g.streets[s] for _, _, s, _ in g.adj[i] if g.street_key[s] in (key,) or
-                             loose_street(g.street_key[s]) == loose_street(key))
+            canonical = next(g.streets[s] for _, _, s, _ in g.adj[i] if g.street_key[s] in (street_key,) or
+                             loose_street(g.street_key[s]) == loose_street(street_key))
             address = f"{number} {canonical}"
             out.append(Place(id=f"{ADDRESS_ID_PREFIX}{c}:{address}", name=address, kind="address", city=c,
                              address=address, lat=g.lat[i], lng=g.lng[i], node=g.ids[i]))
