@@ -28,7 +28,7 @@ class Observation:
 class Environment:
     """Base class; subclasses set ``kind`` and ``name`` and implement the async hooks."""
 
-    kind: ClassVar[Literal["web", "embodied"]]
+    side: ClassVar[Literal["web", "embodied"]]  # the slot it fills in an episode
     name: ClassVar[str]
 
     async def reset(self, task: Any, options: dict[str, Any]) -> None:  # task: taskmodel.Task

@@ -22,9 +22,8 @@ from . import registry
 from .environment import EnvError, Environment, Observation
 from .records import EpisodeRecorder
 from .services import Services
-from .taskmodel import SCHEMA_VERSION, Task, TaskStore
+from .taskmodel import SCHEMA_VERSION, EnvSide, Task, TaskStore
 
-EnvKind = Literal["web", "embodied"]
 Status = Literal["running", "finished", "step_limit", "aborted"]
 END_REASONS: dict[str, str] = {"finished": "the agent finished the episode"}
 ARG_LIMIT = 2000  # characters of one argument kept in the trajectory line of a refused call
@@ -51,11 +50,11 @@ class Episode:
     task: Task
     recorder: EpisodeRecorder
     options: dict[str, Any]
-    environments: dict[EnvKind, Environment] = field(default_factory=dict)
+    environments: dict[EnvSide, Environment] = field(default_factory=dict)
     # kind -> the registry name it was created from ("browser", "kitchen", "street", "geo"):
     # what a tool checks before it acts (a kitchen tool refuses a street episode).
-    environment_names: dict[EnvKind, str] = field(default_factory=dict)
-    active: EnvKind = "web"
+    environment_names: dict[EnvSide, str] = field(default_factory=dict)
+    active: EnvSide = "web"
     status: Status = "running"
     end_reason: str | None = None
     steps: int = 0  # counted actions (the step limit applies to these)
@@ -74,11 +73,11 @@ class Episode:
     def steps_left(self) -> int:
         return max(0, self.task.step_limit - self.steps)
 
-    def environment(self, kind: EnvKind) -> Environment:
-        env = self.environments.get(kind)
+    def environment(self, side: EnvSide) -> Environment:
+        env = self.environments.get(side)
         if env is None:
             raise EpisodeError(
-                f"episode {self.id} has no {kind} environment (task {self.task.id} is {self.task.domain}); "
+                f"episode {self.id} has no {side} environment (task {self.task.id} is {self.task.domain}); "
                 f"use the tools of the {self.active} environment"
             )
         return env
@@ -220,7 +219,7 @@ class EpisodeManager:
         args: dict[str, Any],
         fn: Callable[[Episode], Awaitable[Observation]],
         *,
-        environment: EnvKind | None,
+        environment: EnvSide | None,
         requires: str | None = None,
         counted: bool = True,
         ends: Status | None = None,
@@ -300,7 +299,7 @@ class EpisodeManager:
             if episode.steps >= episode.task.step_limit:
                 await self._end(episode, "step_limit", f"step limit of {episode.task.step_limit} reached")
 
-    async def switch(self, episode_id: str, target: EnvKind, message: str) -> tuple[Episode, Observation]:
+    async def switch(self, episode_id: str, target: EnvSide, message: str) -> tuple[Episode, Observation]:
         async def do(episode: Episode) -> Observation:
             if target not in episode.environments:
                 raise EpisodeError(

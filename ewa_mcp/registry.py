@@ -28,7 +28,7 @@ class EnvironmentSpec:
     """One environment implementation an episode can hold."""
 
     name: str  # the registry name; also the prefix of its tools (kitchen_*) and, embodied, start.embodied.kind
-    kind: Literal["web", "embodied"]  # the slot it fills in an episode (switch_environment's target)
+    side: Literal["web", "embodied"]  # the slot it fills in an episode (switch_environment's target)
     cls: str  # "module:Class"; the class takes (episode, services) (ewa_mcp/environment.py)
     tools: str | None = None  # module exposing register(mcp, episodes) with this environment's tools
     tool_hint: str = ""  # how a refusal names its tools ("kitchen_* tools")

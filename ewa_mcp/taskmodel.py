@@ -21,7 +21,7 @@ SCHEMA_VERSION = 1
 Domain = str
 Difficulty = Literal["easy", "medium", "hard"]
 DIFFICULTIES: tuple[str, ...] = ("easy", "medium", "hard")
-EnvKind = Literal["web", "embodied"]
+EnvSide = Literal["web", "embodied"]
 
 
 class _Strict(BaseModel):
@@ -76,7 +76,7 @@ class DomainStart(BaseModel):
     @field_validator("kind")
     @classmethod
     def _registered(cls, kind: str) -> str:
-        names = sorted(n for n, e in registry.environments().items() if e.kind == "embodied")
+        names = sorted(n for n, e in registry.environments().items() if e.side == "embodied")
         if kind in _BUILTIN_STARTS or kind not in names:
             raise ValueError(f"unknown embodied environment {kind[:100]!r}; the embodied environments are: "
                              f"{', '.join(names)}")
@@ -104,7 +104,7 @@ EmbodiedStart = Annotated[
 
 
 class StartState(_Strict):
-    environment: EnvKind = "web"
+    environment: EnvSide = "web"
     web: WebStart | None = None
     embodied: EmbodiedStart | None = None
 
@@ -299,9 +299,9 @@ class Task(_Strict):
                              "(ewa_mcp/registry.py)")
         return domain
 
-    def environment_names(self) -> dict[EnvKind, str]:
+    def environment_names(self) -> dict[EnvSide, str]:
         """Which environment implementations the task's episodes hold: slot (web/embodied) -> registry name."""
-        names: dict[EnvKind, str] = {}
+        names: dict[EnvSide, str] = {}
         if has_web_environment(self.start.web, self.web_goals):
             names["web"] = WEB_ENVIRONMENT
         if self.start.embodied is not None:

@@ -43,7 +43,7 @@ def _relative_word(turn: float) -> str:
 
 
 class GeoEnvironment(Environment):
-    kind = "embodied"
+    side = "embodied"
     name = "geo"
 
     def __init__(self, episode: Any, services: Any):

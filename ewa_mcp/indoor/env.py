@@ -18,7 +18,7 @@ OBSERVATION_MODES = ("text", "vision", "both")
 
 
 class KitchenEnvironment(Environment):
-    kind: ClassVar[Literal["web", "embodied"]] = "embodied"
+    side: ClassVar[Literal["web", "embodied"]] = "embodied"
     name: ClassVar[str] = "kitchen"
 
     def __init__(self, episode: Any, services: Any):

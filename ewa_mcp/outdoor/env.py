@@ -103,7 +103,7 @@ def view_png(city: str, node: int, heading: int) -> bytes:
 
 
 class StreetEnvironment(Environment):
-    kind = "embodied"
+    side = "embodied"
     name = "street"
 
     def __init__(self, episode: Any, services: Any):

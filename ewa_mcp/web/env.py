@@ -18,7 +18,7 @@ way microsoft/playwright-mcp splits Context, Tab and Response:
 from __future__ import annotations
 
 import asyncio
-from typing import Any, ClassVar
+from typing import Any, ClassVar, Literal
 
 from ..environment import Environment, Observation
 from .actions import BrowserActions
@@ -28,7 +28,7 @@ from .tabs import Tab
 
 
 class BrowserEnvironment(Environment):
-    kind: ClassVar[str] = "web"
+    side: ClassVar[Literal["web", "embodied"]] = "web"
     name: ClassVar[str] = "browser"
 
     def __init__(self, episode: Any, services: Any):

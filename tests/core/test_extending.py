@@ -63,7 +63,7 @@ def test_a_registered_domain_validates_its_tasks_but_not_typos(lighting):
         Task.model_validate(lamp_task(embodied_goals=[{"kind": "lamp_lt"}]))
     with pytest.raises(ValueError, match="already registered"):
         registry.register_domain(DOMAIN)
-    assert "lighting" in registry.domain_names() and registry.environments()["lamp"].kind == "embodied"
+    assert "lighting" in registry.domain_names() and registry.environments()["lamp"].side == "embodied"
 
 
 async def test_a_domain_package_generates_plays_and_grades(lighting, tmp_path):

@@ -45,7 +45,7 @@ def test_every_task_keeps_to_its_domains_declaration(suite):
 def test_every_environment_loads_lazily_and_matches_its_declaration():
     for name, spec in registry.environments().items():
         cls = registry.load_object(spec.cls)
-        assert issubclass(cls, Environment) and cls.name == name and cls.kind == spec.kind, name
+        assert issubclass(cls, Environment) and cls.name == name and cls.side == spec.side, name
         assert spec.tools is not None and callable(importlib.import_module(spec.tools).register), name
         assert environment_for_tool(f"{name}_anything") == name
     assert environment_for_tool("submit_location") is None and environment_for_tool("finish_episode") is None

@@ -24,7 +24,7 @@ class WikiStandIn(Environment):
     """The web side of embodied tasks is the browser engineer's; these tests exercise the
     geolocation world only, so the web environment is a minimal stand-in."""
 
-    kind = "web"
+    side = "web"
     name = "browser"
 
     def __init__(self, episode: Any, services: Any):

@@ -22,7 +22,7 @@ PLATE = "Plate|+0.00|+0.90|-1.00"
 
 
 class FixedKitchen(Environment):
-    kind = "embodied"
+    side = "embodied"
     name = "kitchen"
 
     def __init__(self, episode: Any, services: Any):
@@ -44,7 +44,7 @@ class FixedKitchen(Environment):
 
 
 class Pages(Environment):
-    kind = "web"
+    side = "web"
     name = "browser"
 
     def __init__(self, episode: Any, services: Any):

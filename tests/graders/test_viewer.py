@@ -53,7 +53,7 @@ CAMERA = png(960, 720, noise=True)  # a kitchen frame far above the viewer's siz
 class Pages(Environment):
     """A web environment whose observations carry a screenshot, like the real browser in vision mode."""
 
-    kind = "web"
+    side = "web"
     name = "browser"
 
     def __init__(self, episode: Any, services: Any):
@@ -76,7 +76,7 @@ class Pages(Environment):
 class Camera(Environment):
     """A kitchen that refuses to slice until the agent has approached, and returns a camera frame."""
 
-    kind = "embodied"
+    side = "embodied"
     name = "kitchen"
 
     def __init__(self, episode: Any, services: Any):

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from ewa_mcp.registry import Domain, EnvironmentSpec
 
-LAMP = EnvironmentSpec(name="lamp", kind="embodied", cls=f"{__name__}.env:LampEnvironment", tools=f"{__name__}.tools",
+LAMP = EnvironmentSpec(name="lamp", side="embodied", cls=f"{__name__}.env:LampEnvironment", tools=f"{__name__}.tools",
                        tool_hint="lamp_switch")
 
 DOMAIN = Domain(

@@ -8,7 +8,7 @@ from ewa_mcp.environment import EnvError, Environment, Observation
 
 
 class LampEnvironment(Environment):
-    kind = "embodied"
+    side = "embodied"
     name = "lamp"
 
     def __init__(self, episode: Any, services: Any):
