@@ -108,7 +108,7 @@ def cmd_tasks(args: argparse.Namespace) -> int:
         generated = generate_all(out, domains=args.domain)
         print(json.dumps(generated))
         print(f"wrote {out}" + ("" if args.output or out != Path.cwd() / "tasks" else
-                                "; use it with --tasks ./tasks or EWA_TASKS_DIR=./tasks"), file=sys.stderr)
+                                "; use it with --tasks-dir ./tasks or EWA_TASKS_DIR=./tasks"), file=sys.stderr)
         return 0
     roots = _task_dirs_or_error(args.tasks)
     if roots is None:
@@ -239,8 +239,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="allow a non-loopback --host; every request then needs a bearer token")
     p.add_argument("--token", help="bearer token every HTTP request must carry (default: EWA_MCP_TOKEN; past "
                    "loopback one is generated and printed when neither is set)")
-    p.add_argument("--tasks", action="append", metavar="DIR", help="task directory (repeatable; default: "
-                   "EWA_TASKS_DIR, else the bundled suites)")
+    p.add_argument("--tasks-dir", dest="tasks", action="append", metavar="DIR", help="task directory (repeatable; "
+                   "default: EWA_TASKS_DIR, else the bundled suites)")
+    p.add_argument("--tasks", dest="tasks", action="append", help=argparse.SUPPRESS)  # the 0.x spelling
     p.add_argument("--run-dir", metavar="DIR", help="where episodes are recorded (default: runs/<new id>)")
     p.add_argument("-v", "--verbose", action="store_const", const=True, default=None)
     p.set_defaults(func=cmd_serve)
@@ -254,7 +255,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("action", choices=["list", "validate", "generate", "schema", "import-ewa"])
     p.add_argument("paths", nargs="*", metavar="PATH", help="import-ewa: the paper's navi_env_merge_v1.json (or "
                    "any file of its environments)")
-    p.add_argument("--tasks", action="append", metavar="DIR")
+    p.add_argument("--tasks-dir", dest="tasks", action="append", metavar="DIR", help="task directory (repeatable)")
+    p.add_argument("--tasks", dest="tasks", action="append", help=argparse.SUPPRESS)  # the 0.x spelling
     p.add_argument("--domain", action="append", help="restrict to a domain (repeatable)")
     p.add_argument("-o", "--output", "--out", dest="output", help="output file (schema) or directory (generate; "
                    "import-ewa, default ~/.local/share/ewa-mcp/imported)")

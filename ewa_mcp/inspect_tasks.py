@@ -86,7 +86,7 @@ class _Server:
         args = [sys.executable, "-m", "ewa_mcp", "serve", "--transport", "http", "--port", str(self.port),
                 "--run-dir", str(run_dir)]
         for d in task_dirs:
-            args += ["--tasks", str(d)]
+            args += ["--tasks-dir", str(d)]
         self.proc = subprocess.Popen(args, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, env=child_server_env())
         atexit.register(self.stop)
 

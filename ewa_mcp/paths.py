@@ -30,7 +30,7 @@ def in_checkout() -> bool:
 
 
 def task_dirs(settings: Settings | None = None) -> list[Path]:
-    """The task suites to serve: the tasks_dir setting (--tasks, EWA_TASKS_DIR), else the installed
+    """The task suites to serve: the tasks_dir setting (--tasks-dir, EWA_TASKS_DIR), else the installed
     package's, else the checkout's tasks/."""
     settings = settings or load_settings()
     if settings.tasks_dir:
@@ -69,6 +69,6 @@ def check_task_dirs(dirs: list[Path]) -> None:
             return
     shown = ", ".join(str(d)[:200] for d in dirs) or "(none given)"
     raise TaskStoreMissing(
-        f"no task files in {shown}. Point to a task suite with --tasks DIR (or EWA_TASKS_DIR=DIR), "
+        f"no task files in {shown}. Point to a task suite with --tasks-dir DIR (or EWA_TASKS_DIR=DIR), "
         "reinstall the package (`pip install --force-reinstall ewa-mcp`, whose wheel ships the suites), "
         "or write them with `ewa-mcp tasks generate -o DIR`")

@@ -25,7 +25,7 @@ ENV_PREFIX = "EWA_"
 
 # The CLI flag of each setting that has one (``ewa-mcp serve``); the others are set by their variable only.
 FLAGS: dict[str, str] = {
-    "tasks_dir": "--tasks",
+    "tasks_dir": "--tasks-dir",
     "run_dir": "--run-dir",
     "transport": "--transport",
     "host": "--host",

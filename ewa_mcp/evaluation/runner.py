@@ -64,7 +64,7 @@ def _free_port() -> int:
 def _server_args(task_dirs: list[Path], run_dir: Path) -> list[str]:
     args = ["-m", "ewa_mcp", "serve", "--run-dir", str(run_dir)]
     for d in task_dirs:
-        args += ["--tasks", str(d)]
+        args += ["--tasks-dir", str(d)]
     return args
 
 

@@ -459,7 +459,7 @@ def run_cli(paths: list[str], out: str | None, annotations: str | None) -> int:
         print(json.dumps(counts(result)))
     if status == 0:
         print(f"tasks and street graphs are in {out_dir}; run them with: ewa-mcp eval --tasks-dir {out_dir} "
-              f"(or ewa-mcp serve --tasks {out_dir})")
+              f"(or ewa-mcp serve --tasks-dir {out_dir})")
     return status
 
 

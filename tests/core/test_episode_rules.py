@@ -176,7 +176,7 @@ def _kitchen_only_task() -> dict[str, Any]:
 
 async def test_finish_is_atomic_over_http(tmp_path):
     tasks = write_tasks(tmp_path / "tasks", [_kitchen_only_task()])
-    proc, port = serve(tmp_path, "--tasks", str(tasks))
+    proc, port = serve(tmp_path, "--tasks-dir", str(tasks))
     try:
         async with Client(f"http://127.0.0.1:{port}/mcp") as client:
             r = await client.call_tool("start_episode", {"task_id": "race-kitchen"})

@@ -40,7 +40,7 @@ def test_a_variable_beats_the_default_and_a_flag_beats_the_variable(monkeypatch,
     s = serve_settings()
     assert (s.port, s.host, s.token()) == (9100, "localhost", "from-the-environment-0123")
     assert s.tasks_dir == [tmp_path / "a", tmp_path / "b"]
-    s = serve_settings("--port", "9200", "--token", "from-the-flag-0123456789", "--tasks", str(tmp_path / "c"))
+    s = serve_settings("--port", "9200", "--token", "from-the-flag-0123456789", "--tasks-dir", str(tmp_path / "c"))
     assert (s.port, s.host, s.token()) == (9200, "localhost", "from-the-flag-0123456789")  # host: no flag given
     assert s.tasks_dir == [tmp_path / "c"]
     assert task_dirs(s) == [tmp_path / "c"]

@@ -103,5 +103,5 @@ def test_dataset_filters(tmp_path):
     assert one and all(str(s.id).startswith("navigation-") for s in one)
     with pytest.raises(inspect_tasks.EvalError, match="difficulty"):
         inspect_tasks.ewa_dataset(["cooking"], difficulty="impossible")
-    with pytest.raises(inspect_tasks.TaskStoreMissing, match="--tasks DIR"):
+    with pytest.raises(inspect_tasks.TaskStoreMissing, match="--tasks-dir DIR"):
         inspect_tasks.ewa_dataset(None, tasks_dir_=str(tmp_path))

@@ -133,7 +133,7 @@ def test_cli_imports_and_prints_counts(tmp_path, capsys):
     counts = json.loads(next(line for line in out.splitlines() if line.startswith("{")))
     assert counts["environments"] == 3 and counts["tasks"] == 1 and counts["skipped"] == 2
     assert f"ewa-mcp eval --tasks-dir {tmp_path / 'out'}" in out
-    assert cli_main(["tasks", "validate", "--tasks", str(tmp_path / "out")]) == 0
+    assert cli_main(["tasks", "validate", "--tasks-dir", str(tmp_path / "out")]) == 0
     assert cli_main(["tasks", "import-ewa", str(tmp_path / "nope.json"), "--out", str(tmp_path / "out")]) == 2
 
 
