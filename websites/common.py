@@ -20,18 +20,14 @@ from starlette.requests import Request
 from starlette.responses import HTMLResponse, Response
 from starlette.templating import Jinja2Templates
 
+from .sites import DECLARED
+
 EPISODE_HEADER = "x-ewa-episode"
 ANONYMOUS = "anonymous"
 WEBSITES_DIR = Path(__file__).resolve().parent
 COMMON_TEMPLATES = WEBSITES_DIR / "templates"
 
-SITE_TITLES = {
-    "home": "EWA Home",
-    "recipes": "Recipes",
-    "shop": "Shop",
-    "map": "Map",
-    "wiki": "Wiki",
-}
+SITE_TITLES = {site.name: site.title for site in DECLARED}
 
 
 @dataclass

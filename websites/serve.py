@@ -18,18 +18,14 @@ from typing import Any
 import uvicorn
 
 from .common import SiteContext
+from .sites import DECLARED
 
 log = logging.getLogger("ewa_mcp.websites")
 
-# site name -> "module:create_app"; a site whose module is missing in this build is skipped.
-SITES: dict[str, str] = {
-    "home": "ewa_mcp.websites.home.app:create_app",
-    "recipes": "ewa_mcp.websites.recipes.app:create_app",
-    "shop": "ewa_mcp.websites.shop.app:create_app",
-    "map": "ewa_mcp.websites.map.app:create_app",
-    "wiki": "ewa_mcp.websites.wiki.app:create_app",
-}
-DEFAULT_PORTS = {"home": 8701, "recipes": 8702, "shop": 8703, "map": 8704, "wiki": 8705}
+# site name -> "module:create_app" (from sites.py); a site whose module is missing in this build is skipped.
+# Tests and benchmarks may replace this mapping to serve a fixture site.
+SITES: dict[str, str] = {site.name: site.app for site in DECLARED}
+DEFAULT_PORTS = {site.name: site.port for site in DECLARED}
 
 
 def _free_port(host: str) -> int:

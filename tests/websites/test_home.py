@@ -86,3 +86,17 @@ def test_home_to_recipes_in_chromium(site_server, browser_page):
     events = site_server.events.for_episode(episode)
     assert {"site": "home", "type": "search", "query": "toast", "target": "recipes"} in events
     assert any(e["site"] == "recipes" and e["type"] == "search" and e["query"] == "toast" for e in events)
+
+
+def test_every_site_is_declared_once_and_everything_else_follows_from_it():
+    from ewa_mcp.websites import serve
+    from ewa_mcp.websites.common import SITE_TITLES
+    from ewa_mcp.websites.home.app import DESCRIPTIONS
+    from ewa_mcp.websites.sites import DECLARED
+
+    names = [site.name for site in DECLARED]
+    assert len(set(names)) == len(names) and len({site.port for site in DECLARED}) == len(names)
+    assert list(serve.DEFAULT_PORTS) == names and list(SITE_TITLES) == names
+    assert set(serve.available_sites()) == set(names)  # every declared app imports
+    # every site but the homepage itself is listed on the homepage, and each listed one is searchable
+    assert list(DESCRIPTIONS) == names[1:] and set(SEARCH_PATHS) <= set(DESCRIPTIONS)

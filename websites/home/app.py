@@ -13,18 +13,14 @@ from starlette.responses import RedirectResponse, Response
 from starlette.routing import Route
 
 from ..common import SiteContext, episode_of, exception_handlers, make_templates
+from ..sites import DECLARED
 
 SITE_DIR = Path(__file__).resolve().parent
 MAX_QUERY_CHARS = 200
 
-DESCRIPTIONS = {
-    "recipes": "Find recipes by diet, difficulty, ingredients and equipment, and follow them step by step.",
-    "shop": "Buy groceries and household items for pickup at a store in Manhattan.",
-    "map": "Search places and get walking directions in New York, Boston, Philadelphia and Pittsburgh.",
-    "wiki": "An encyclopedia of landmarks, cities, countries, dishes and ingredients.",
-}
-# Each site's search page and its text parameter (the site briefs fix these URLs).
-SEARCH_PATHS = {"recipes": "/", "shop": "/search", "map": "/search", "wiki": "/search"}
+DESCRIPTIONS = {site.name: site.description for site in DECLARED if site.description}
+# Each site's search page, sent the query as ?q= (declared in sites.py).
+SEARCH_PATHS = {site.name: site.search_path for site in DECLARED if site.search_path is not None}
 BENCH_URLS = ["/", "/go?site=recipes&q=toast"]
 
 
