@@ -10,7 +10,7 @@ from __future__ import annotations
 import random
 from typing import Any
 
-from .scenes import _PLACES
+from .scene_stock import PLACES
 from .sim_objects import HAND_REACH, SURFACE_TYPES, ActionFailed, SimObject
 from .sim_world import SimWorld
 from .vocabulary import (
@@ -236,7 +236,7 @@ class HandActions(SimWorld):
         for obj in movable:
             self._detach(obj)
         for obj in movable:
-            preferences = _PLACES.get(PIECE_OF.get(obj.object_type, obj.object_type), [("CounterTop", 1.0)])
+            preferences = PLACES.get(PIECE_OF.get(obj.object_type, obj.object_type), [("CounterTop", 1.0)])
             options = []
             for receptacle_type, weight in preferences:
                 for target in self.objects:
