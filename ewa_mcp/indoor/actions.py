@@ -7,7 +7,7 @@ names it answers to in an action string and the arguments each name fixes (``Tog
 destroys (its MCP annotations), and ``run``: what it does on a ``KitchenSession`` (ewa_mcp/indoor/session.py).
 The command parser (commands.py), the session's ``run``, the environment's ``perform`` and the tools all read
 this table, so adding an action is one entry here (plus, for an AI2-THOR action the built-in simulator does
-not know yet, its handler in sim.py). docs/extending.md walks through it.
+not know yet, its handler in sim_hands.py or sim_moves.py). docs/extending.md walks through it.
 
 This module imports no simulator: the server builds the kitchen tools from it at start.
 """

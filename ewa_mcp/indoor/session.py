@@ -4,7 +4,7 @@ The session turns agent-level requests ("pick up the Apple", "teleport to Fridge
 AI2-THOR actions on a controller — the built-in ``KitchenSim`` or a real
 ``ai2thor.controller.Controller`` — and reads back only AI2-THOR metadata, so both backends
 share every rule here: object references and handles, teleporting to an object, deliveries
-from the shop, the observation and the final state.
+from the shop (their rules in deliveries.py), the observation and the final state.
 
 Object references. An agent may name an object by
   * its objectId (``Apple|+01.00|+00.95|-01.25``),
@@ -28,8 +28,8 @@ from typing import Any, Protocol
 from ..environment import EnvError
 from .actions import TABLE
 from .commands import Command, parse_command
+from .deliveries import deliver_order
 from .vocabulary import (
-    DELIVERABLE_TYPES,
     PIECE_FOR,
     PIECE_OF,
     SHOP_SOLD_TYPES,
@@ -421,7 +421,7 @@ class KitchenSession:
     def toggle(self, ref: str, on: bool) -> ActionReport:
         return self.object_action(self._thor("toggle", state="on" if on else "off"), ref)
 
-    # ------------------------------------------------------------------ deliveries
+    # ------------------------------------------------------------------ deliveries (deliveries.py)
     def receive_deliveries(self, events: list[dict[str, Any]]) -> list[str]:
         """Materialise groceries from new shop orders on a CounterTop; returns what arrived."""
         arrived: list[str] = []
@@ -430,69 +430,9 @@ class KitchenSession:
             self._events_seen += 1
             if not isinstance(event, dict) or event.get("site") != "shop" or event.get("type") != "order_placed":
                 continue
-            order = event.get("order") or {}
-            items = [i for i in order.get("items") or [] if isinstance(i, dict) and i.get("kitchen_type")]
-            if items and order.get("fulfilment") != "delivery":
-                # Only an order placed for delivery comes to the kitchen; say so once for a pickup order.
-                kinds = ", ".join(sorted({str(i["kitchen_type"]) for i in items}))
-                arrived.append(f"Order {order.get('order_id')} ({kinds}) is for pickup at the store, so nothing "
-                               "arrives in this kitchen; to get groceries here, order them with 'Deliver to my "
-                               "kitchen' at checkout.")
-                continue
-            for item in items:
-                arrived.extend(self._deliver(order, item))
+            arrived.extend(deliver_order(self, event.get("order") or {}))
         self._pending_notes.extend(arrived)
         return arrived
-
-    def _deliver(self, order: dict[str, Any], item: dict[str, Any]) -> list[str]:
-        kind = canonical_type(str(item["kitchen_type"])) or str(item["kitchen_type"])
-        try:
-            quantity = max(1, min(10, int(item.get("quantity", 1))))
-        except (TypeError, ValueError):
-            quantity = 1
-        record: dict[str, Any] = {
-            "order_id": order.get("order_id"), "store_id": order.get("store_id"),
-            "product_id": item.get("product_id"), "kitchen_type": kind, "quantity": quantity,
-            "objectIds": [], "handles": [], "receptacle": None, "status": "delivered",
-        }
-        self.deliveries.append(record)
-        if kind not in DELIVERABLE_TYPES:
-            record["status"] = "not_a_kitchen_object"
-            return [f"The order's {kind} is not something this kitchen can hold; nothing arrived for it."]
-        notes = []
-        for _ in range(quantity):
-            counter = self._delivery_counter()
-            if counter is None:
-                record["status"] = "failed"
-                record["message"] = "this kitchen has no CounterTop"
-                break
-            box = counter["axisAlignedBoundingBox"]
-            top = box["center"]["y"] + box["size"]["y"] / 2
-            before = set(self.objects)
-            event = self.controller.step(action="CreateObjectAtLocation", objectType=kind, forceAction=True,
-                                         position={"x": box["center"]["x"], "y": top + 0.05, "z": box["center"]["z"]},
-                                         rotation={"x": 0.0, "y": 0.0, "z": 0.0})
-            if not event.metadata["lastActionSuccess"]:
-                record["status"] = "failed"
-                record["message"] = self._readable(str(event.metadata["errorMessage"]))
-                notes.append(f"A delivery of {kind} could not be placed: {record['message']}")
-                break
-            self._refresh(event.metadata)
-            for object_id in self.objects:
-                if object_id not in before:
-                    record["objectIds"].append(object_id)
-                    record["handles"].append(self.handle(object_id))
-                    record["receptacle"] = self.parent_of(self.objects[object_id])
-                    notes.append(f"A delivery arrived: {self.handle(object_id)} on "
-                                 f"{self.handle(record['receptacle'])}.")
-        return notes
-
-    def _delivery_counter(self) -> dict[str, Any] | None:
-        counters = [o for o in self.objects.values() if o["objectType"] == "CounterTop"]
-        if not counters:
-            return None
-        # The emptiest counter, the lowest handle first: deterministic and where there is room.
-        return min(counters, key=lambda o: (len(o.get("receptacleObjectIds") or []), self._number(o["objectId"])))
 
     def take_notes(self) -> list[str]:
         notes, self._pending_notes = self._pending_notes, []

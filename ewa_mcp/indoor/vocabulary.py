@@ -163,11 +163,6 @@ STAND_INS: dict[str, tuple[str, ...]] = {
 }
 
 
-def source_type(object_type: str) -> str:
-    """The food a piece was cut from (TomatoSliced -> Tomato); other types map to themselves."""
-    return PIECE_OF.get(object_type, object_type)
-
-
 def accepts(receptacle_type: str, object_type: str) -> bool:
     allowed = RECEPTACLE_ACCEPTS.get(receptacle_type)
     return allowed is not None and object_type in allowed
