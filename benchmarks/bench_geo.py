@@ -55,7 +55,7 @@ def bench_views(n: int) -> dict[str, Any]:
 
 
 class WikiStandIn:
-    kind = "web"
+    side = "web"
     name = "browser"
 
     def __init__(self, episode: Any, services: Any):

@@ -138,8 +138,7 @@ def cmd_tasks(args: argparse.Namespace) -> int:
 
 def cmd_eval(args: argparse.Namespace) -> int:
     from .evaluation.agents import NoopAgent, OracleAgent, RandomAgent, ReplayAgent, ReplayError, load_replay
-    from .evaluation.runner import EvalError, play, run_dir_from, select_tasks, task_dirs_from
-    from .evaluation.scale import scale_options
+    from .evaluation.runner import EvalError, play_from_args, run_dir_from, select_tasks, task_dirs_from
     from .graders import grade_run, render_report
     from .taskmodel import TaskStore
 
@@ -162,12 +161,9 @@ def cmd_eval(args: argparse.Namespace) -> int:
         return 2
     run_dir = run_dir_from(args.run_dir)
     try:
-        scale = scale_options(args)
-        print(f"{agent.name}: {len(tasks)} tasks, {scale.describe()}, {args.transport}; recording to {run_dir}",
-              file=sys.stderr)
-        summary = play(tasks, agent, run_dir=run_dir, task_dirs=task_dirs, transport=args.transport,
-                       workers=scale.workers, concurrency=scale.concurrency, ray=scale.ray,
-                       progress=not args.quiet)
+        summary = play_from_args(tasks, agent, args, run_dir=run_dir, task_dirs=task_dirs, announce=lambda scale: print(
+            f"{agent.name}: {len(tasks)} tasks, {scale.describe()}, {args.transport}; recording to {run_dir}",
+            file=sys.stderr))
     except EvalError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2

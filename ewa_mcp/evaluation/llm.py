@@ -187,17 +187,13 @@ def run_example(args: Any, agent: LLMAgent) -> int:
     import sys
 
     from ..taskmodel import TaskStore
-    from .runner import EvalError, play, run_dir_from, select_tasks, task_dirs_from
-    from .scale import scale_options
+    from .runner import EvalError, play_from_args, run_dir_from, select_tasks, task_dirs_from
 
     task_dirs = task_dirs_from(args.tasks_dir)
     run_dir = run_dir_from(args.run_dir)
     try:
         tasks = select_tasks(TaskStore(task_dirs), args.tasks, args.sample, args.domain, args.difficulty)
-        scale = scale_options(args)
-        summary = play(tasks, agent, run_dir=run_dir, task_dirs=task_dirs, transport=args.transport,
-                       workers=scale.workers, concurrency=scale.concurrency, ray=scale.ray,
-                       progress=not args.quiet)
+        summary = play_from_args(tasks, agent, args, run_dir=run_dir, task_dirs=task_dirs)
     except EvalError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2

@@ -22,7 +22,7 @@ from ..settings import child_server_env
 from ..taskmodel import Task, TaskStore
 
 if TYPE_CHECKING:
-    from .scale import RayOptions
+    from .scale import RayOptions, ScaleOptions
 
 
 class EvalError(ValueError):
@@ -251,3 +251,16 @@ def play(tasks: list[Task], agent: Any, *, run_dir: Path, task_dirs: list[Path],
     sys.stderr.write(f"played {len(summary.outcomes) - len(failed)}/{len(summary.outcomes)} episodes in "
                      f"{summary.seconds:.1f}s\n")
     return summary
+
+
+def play_from_args(tasks: list[Task], agent: Any, args: Any, *, run_dir: Path, task_dirs: list[Path],
+                   announce: Callable[[ScaleOptions], None] | None = None) -> EvalSummary:
+    """``play`` with the command line's --transport, --workers, --concurrency, --ray* and --quiet (``ewa-mcp eval``
+    and the LLM agents' shared options); the scale options are checked first (EvalError names the fix)."""
+    from .scale import scale_options
+
+    scale = scale_options(args)
+    if announce is not None:
+        announce(scale)
+    return play(tasks, agent, run_dir=run_dir, task_dirs=task_dirs, transport=args.transport, workers=scale.workers,
+                concurrency=scale.concurrency, ray=scale.ray, progress=not args.quiet)

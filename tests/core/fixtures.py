@@ -17,7 +17,7 @@ from ewa_mcp.response import env_action
 class CounterEnv(Environment):
     """Counts up; refuses negative increments (an action that must change nothing)."""
 
-    kind = "embodied"
+    side = "embodied"
     name = "counter"
 
     def __init__(self, episode: Any, services: Any):
@@ -44,7 +44,7 @@ class CounterEnv(Environment):
 
 
 class NoteEnv(CounterEnv):
-    kind = "web"
+    side = "web"
     name = "browser"
 
     async def observe(self) -> Observation:
@@ -87,3 +87,18 @@ def counter_task(task_id: str = "t-counter", step_limit: int = 5, start: str = "
         "answer": {"kind": "text", "must_include": ["three"]},
         "oracle": [{"tool": "counter_add", "args": {"amount": 2}}],
     }
+
+
+def listed_tools(tmp_path: Path) -> list[Any]:
+    """Every tool the full server lists (an in-process client's tools/list)."""
+    import anyio
+    from mcp import Client
+
+    from ewa_mcp.server import ServerConfig, build_server
+
+    async def main() -> list[Any]:
+        mcp, _ = build_server(ServerConfig(run_dir=tmp_path))
+        async with Client(mcp) as client:
+            return (await client.list_tools()).tools
+
+    return anyio.run(main)

@@ -5,8 +5,6 @@ once in the driver's run directory and grades as a one-process run does, includi
 from __future__ import annotations
 
 import sys
-import threading
-import time
 from collections import Counter
 
 import anyio
@@ -21,7 +19,7 @@ from ewa_mcp.evaluation.scale import RayOptions  # noqa: E402
 from ewa_mcp.paths import tasks_dir  # noqa: E402
 from ewa_mcp.taskmodel import TaskStore  # noqa: E402
 
-from .test_eval_workers import StallOnce, grades, landed  # noqa: E402
+from .test_eval_workers import StallOnce, drive_until_stalled, grades, landed  # noqa: E402
 
 
 def ray_tasks():
@@ -53,19 +51,9 @@ def test_ray_actor_killed_mid_episode_its_episode_lands_once(cluster, one_proces
     target = tasks[2].id
     marker = tmp_path / "stalled.pid"
     run_dir = tmp_path / "run"
-    result = {}
-
-    def drive():
-        result["summary"] = play_on_ray(tasks, StallOnce(target, marker), RayOptions(actors=2, num_cpus=1),
-                                        run_dir=run_dir, task_dirs=[tasks_dir()], progress=False)
-
-    driver = threading.Thread(target=drive)
-    driver.start()
-    deadline = time.monotonic() + 120
-    while not marker.exists() and time.monotonic() < deadline:
-        time.sleep(0.05)
-    assert marker.exists(), "the stalling episode never started"
-    pid = int(marker.read_text())
+    driver, result, pid = drive_until_stalled(
+        lambda: play_on_ray(tasks, StallOnce(target, marker), RayOptions(actors=2, num_cpus=1), run_dir=run_dir,
+                            task_dirs=[tasks_dir()], progress=False), marker)
     stalled = [h for h in map(ray.get_actor, [n for n in ray.util.list_named_actors() if n.startswith(ACTOR_PREFIX)])
                if ray.get(h.where.remote())[1] == pid]
     assert len(stalled) == 1

@@ -60,6 +60,19 @@ def one_process_grades(tmp_path_factory):
     return grades(run_dir)
 
 
+def drive_until_stalled(play, marker: Path) -> tuple[threading.Thread, dict, int]:
+    """Run ``play()`` in a thread until the StallOnce episode has started; return the thread, the dict its
+    summary lands in (``result["summary"]``) and the pid of the process holding the stalled episode."""
+    result: dict = {}
+    driver = threading.Thread(target=lambda: result.update(summary=play()))
+    driver.start()
+    deadline = time.monotonic() + 120
+    while not marker.exists() and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert marker.exists(), "the stalling episode never started"
+    return driver, result, int(marker.read_text())
+
+
 def test_two_workers_land_each_episode_once_even_when_one_is_killed(tmp_path, one_process_grades):
     """Every task's episode lands exactly once and grades as in one process; the episode a killed worker was
     playing is played again by another, and its partial record (open in the dead worker's staging folder)
@@ -68,20 +81,10 @@ def test_two_workers_land_each_episode_once_even_when_one_is_killed(tmp_path, on
     target = tasks[len(tasks) // 2].id
     marker = tmp_path / "stalled.pid"
     run_dir = tmp_path / "run"
-    result = {}
-
-    def drive():
-        # Two episodes at once in each worker: the killed one holds the stalled episode and maybe another.
-        result["summary"] = play_in_processes(tasks, StallOnce(target, marker), workers=2, concurrency=2,
-                                              run_dir=run_dir, task_dirs=[tasks_dir()], progress=False)
-
-    driver = threading.Thread(target=drive)
-    driver.start()
-    deadline = time.monotonic() + 120
-    while not marker.exists() and time.monotonic() < deadline:
-        time.sleep(0.05)
-    assert marker.exists(), "the stalling episode never started"
-    pid = int(marker.read_text())
+    # Two episodes at once in each worker: the killed one holds the stalled episode and maybe another.
+    driver, result, pid = drive_until_stalled(
+        lambda: play_in_processes(tasks, StallOnce(target, marker), workers=2, concurrency=2, run_dir=run_dir,
+                                  task_dirs=[tasks_dir()], progress=False), marker)
     # The stalled episode's record is open in that worker's staging folder, not in the run directory.
     assert target not in landed(run_dir)
     os.kill(pid, signal.SIGKILL)

@@ -3,12 +3,11 @@
 
 from __future__ import annotations
 
-import anyio
 import pytest
-from mcp import Client
 from mcp.server.mcpserver import MCPServer
 
-from ewa_mcp.server import ServerConfig, build_server
+
+from .fixtures import listed_tools
 from ewa_mcp.tools.adapter import check_declared, define_tool, tool_annotations
 
 LOOKS = {"get_observation", "street_observe", "geo_look", "browser_snapshot", "browser_screenshot",
@@ -17,17 +16,9 @@ LOOKS = {"get_observation", "street_observe", "geo_look", "browser_snapshot", "b
 DESTRUCTIVE = {"finish_episode", "submit_location", "street_stop", "kitchen_slice", "kitchen_cook", "kitchen_action"}
 
 
-def _tools(tmp_path):
-    async def main():
-        mcp, _ = build_server(ServerConfig(run_dir=tmp_path))
-        async with Client(mcp) as client:
-            return (await client.list_tools()).tools
-
-    return anyio.run(main)
-
 
 def test_every_tool_has_a_title_and_closed_world_annotations(tmp_path):
-    tools = _tools(tmp_path)
+    tools = listed_tools(tmp_path)
     assert len(tools) > 30
     for tool in tools:
         assert tool.title and tool.title.strip(), tool.name
@@ -38,7 +29,7 @@ def test_every_tool_has_a_title_and_closed_world_annotations(tmp_path):
 
 
 def test_looks_are_read_only_and_actions_are_not(tmp_path):
-    tools = {t.name: t.annotations for t in _tools(tmp_path)}
+    tools = {t.name: t.annotations for t in listed_tools(tmp_path)}
     assert LOOKS <= set(tools)
     for name, a in tools.items():
         assert a.read_only_hint is (name in LOOKS), name

@@ -8,21 +8,12 @@ from __future__ import annotations
 
 import json
 
-import anyio
 import pytest
-from mcp import Client
 
 from ewa_mcp.schemas import SchemaError, close_objects, inline_refs
-from ewa_mcp.server import ServerConfig, build_server
 
+from .fixtures import listed_tools
 
-def _tools(tmp_path):
-    async def main():
-        mcp, _ = build_server(ServerConfig(run_dir=tmp_path))
-        async with Client(mcp) as client:
-            return (await client.list_tools()).tools
-
-    return anyio.run(main)
 
 
 def _nullable(prop: dict) -> bool:
@@ -52,7 +43,7 @@ def _strict_problems(schema: dict, where: str) -> list[str]:
 
 
 def test_no_tool_schema_uses_refs(tmp_path):
-    tools = _tools(tmp_path)
+    tools = listed_tools(tmp_path)
     assert len(tools) > 20
     for tool in tools:
         for kind, schema in (("input", tool.input_schema), ("output", tool.output_schema)):
@@ -62,13 +53,13 @@ def test_no_tool_schema_uses_refs(tmp_path):
 
 def test_every_input_schema_meets_openai_strict_rules(tmp_path):
     problems = []
-    for tool in _tools(tmp_path):
+    for tool in listed_tools(tmp_path):
         problems += _strict_problems(tool.input_schema, tool.name)
     assert not problems, "\n".join(problems)
 
 
 def test_start_episode_options_are_inlined_and_still_validated(tmp_path):
-    start = next(t for t in _tools(tmp_path) if t.name == "start_episode")
+    start = next(t for t in listed_tools(tmp_path) if t.name == "start_episode")
     options = start.input_schema["properties"]["options"]
     model = next(alt for alt in options["anyOf"] if alt.get("type") == "object")
     assert "observation" in model["properties"] and model["additionalProperties"] is False

@@ -22,7 +22,7 @@ KITCHEN_TOOLS = {"kitchen_teleport", "kitchen_move", "kitchen_rotate", "kitchen_
 class StubWeb(Environment):
     """A web environment that does nothing: these tests are about the kitchen."""
 
-    kind = "web"
+    side = "web"
     name = "browser"
 
     def __init__(self, episode: Any, services: Any):
