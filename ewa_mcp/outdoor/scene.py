@@ -246,7 +246,8 @@ def describe(scene: Scene) -> str:
         else:
             parts.append("No street continues this way: a row of building fronts across the sidewalk.")
     for f in scene.frontages[:5]:
-        parts.append(f"{frontage_where(scene, f).capitalize()}, {int(round(f.range_m))} m away: "
+        where = frontage_where(scene, f)  # capitalise its first letter only: street names keep theirs
+        parts.append(f"{where[:1].upper()}{where[1:]}, {int(round(f.range_m))} m away: "
                      f"{what_is_seen(f.kind, f.sign, f.hint)}.")
     for s in sorted(scene.skyline, key=lambda s: s.distance_m)[:2]:
         side = "slightly right" if s.rel_angle > 10 else "slightly left" if s.rel_angle < -10 else "straight ahead"

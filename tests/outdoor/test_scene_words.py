@@ -52,3 +52,19 @@ def test_a_view_across_a_park_shows_the_park_not_building_fronts(world):
             assert "building fronts" not in text and "open ground" in text, text
             checked += 1
     assert checked >= 2
+
+
+def test_a_street_named_in_a_frontage_keeps_its_capitals(world):
+    # play-test: "Ahead on the right-hand side of 6th avenue" — the sentence was capitalised as a whole
+    import re
+
+    graph = world.city("manhattan")
+    streets = set(graph.streets)
+    named = 0
+    for i in range(0, len(graph.ids), 5):
+        for _, _, _, h in graph.adj[i][:2]:
+            text = describe(compute_scene(world, graph, i, h, "front"))
+            for street in re.findall(r"-hand side of ([^,]+), \d+ m away", text):
+                assert street in streets, (street, text)
+                named += 1
+    assert named > 0
