@@ -157,7 +157,8 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         return step_result(episode, observation)
 
     @define_tool(mcp, title="Switch environment", effect="act",
-                 description="Switch the active environment (web <-> embodied). Say in message what you will do there.")
+                 description=("Switch the active environment (web <-> embodied); returns that environment's "
+                              "observation, so no look is needed after it. Say in message what you will do there."))
     async def switch_environment(
         episode_id: EpisodeId,
         target: Literal["web", "embodied"],
