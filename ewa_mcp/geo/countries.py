@@ -40,7 +40,7 @@ class Country:
     plate: PlateStyle
     sign: StreetSignStyle
     phone: str  # "{a}" = the city's area code, "#" = a digit
-    arch: str  # default building style (render.py draws each style)
+    arch: str  # default building style (view_images.py draws each style)
     centre_line: str = "white"  # colour of the centre line on two-way streets
     edge_line: str = "white"
     aliases: tuple[str, ...] = ()  # other names for grading: exonyms, native names, short forms

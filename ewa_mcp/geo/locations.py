@@ -24,7 +24,7 @@ DIFFICULTIES = ("easy", "city", "street")
 
 @dataclass(frozen=True)
 class Landmark:
-    kind: str  # what render.py draws: obelisk, column, spire, clock_tower, arch, onion_domes, ...
+    kind: str  # what view_images.py draws: obelisk, column, spire, clock_tower, arch, onion_domes, ...
     description: str  # what the view shows, in plain visual words (never a name)
 
 

@@ -1,6 +1,6 @@
 """What one directional view shows: a deterministic scene specification.
 
-The same ``ViewSpec`` drives the Pillow renderer (render.py) and the text description for
+The same ``ViewSpec`` drives the Pillow renderer (view_images.py) and the text description for
 text-only agents (describe.py), so both observation modes carry exactly the same cues.
 
 Where the cues appear follows the location's difficulty (see locations.py):

@@ -1,7 +1,7 @@
 """What a standing agent can see in one direction: the street ahead and its cross streets, the
 buildings and shop signs on either side, tall landmarks on the skyline, street-name signs.
 
-The same Scene feeds the image renderer (render.py) and the text description (describe), so
+The same Scene feeds the image renderer (street_view.py) and the text description (describe), so
 text-only and vision agents observe the same world.
 """
 

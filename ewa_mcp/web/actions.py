@@ -16,7 +16,7 @@ from playwright.async_api import TimeoutError as PlaywrightTimeoutError
 from ..environment import EnvError, Observation
 from .aria import AriaNode
 from .observation import collect, observe, present
-from .render import EDITABLE_ROLES
+from .tree_text import EDITABLE_ROLES
 from .safety import BlockedUrlError
 from .session import BrowserSession
 from .settle import CHANGES_JS

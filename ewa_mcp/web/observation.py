@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any, Literal
 from playwright.async_api import Error as PlaywrightError
 
 from ..environment import Observation
-from .render import RenderedTree, render_tree
+from .tree_text import RenderedTree, render_tree
 from .som import DRAW_MARKS_JS, REMOVE_MARKS_JS, marks_payload
 from .tabs import PAGE_INFO_JS, Tab, take_snapshot
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from .render import Mark
+from .tree_text import Mark
 
 # Distinct, readable colours; an element keeps its colour between screenshots (id-based).
 PALETTE = ("#e6194b", "#3c8c3c", "#005ac8", "#f58230", "#911eb4", "#008c8c", "#c81ea0", "#786400", "#000080",

@@ -12,7 +12,7 @@ from ewa_mcp.web import chromium
 from ewa_mcp.web.aria import parse_snapshot
 from ewa_mcp.web.elements import (ElementRefError, ElementRegistry, IdRef, RoleNameRef, parse_element,
                                   resolve_role_name)
-from ewa_mcp.web.render import render_tree
+from ewa_mcp.web.tree_text import render_tree
 from ewa_mcp.web.safety import BlockedUrlError, UrlPolicy, normalize_origin
 
 SNAPSHOT = """\
