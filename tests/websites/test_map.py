@@ -206,9 +206,10 @@ def test_places_in_different_cities_are_refused(client, sink):
     assert not sink.of("directions")
 
 
-def test_half_filled_form_only_prefills(client, sink):
+def test_half_filled_form_only_prefills(client, sink, world):
     html = client.get("/directions", params={"to": "store-cvs-midtown"}).text
-    assert 'name="to" value="store-cvs-midtown"' in html and 'class="steps"' not in html
+    name = str(escape(world.places["store-cvs-midtown"].name))  # the form shows the name, not the id
+    assert f'name="to" value="{name}"' in html and 'class="steps"' not in html
     assert not sink.of("directions")
 
 
@@ -251,3 +252,20 @@ def test_directions_via_a_waypoint_pass_it_and_record_both_legs(client, sink, wo
     assert route.nodes[: len(world.directions(FLATIRON, esb).nodes)] == world.directions(FLATIRON, esb).nodes
     assert [(e["origin"], e["destination"]) for e in sink.of("directions")] == [(FLATIRON, esb), (esb, TARGET)]
     assert "via=" in re.search(r'<a href="(/directions\?[^"]+)">Reverse the route', html).group(1)
+
+
+def test_a_place_id_in_the_directions_form_shows_as_the_place_name(client, world):
+    # play-test: the shop's "Walking directions to <store>" link filled the form's To box with
+    # 'store-target-herald-square'; the form shows names, and each shown name finds the same place again
+    import html as html_module
+
+    from ewa_mcp.websites.shop.catalog import load_stores
+
+    for store in load_stores():
+        html = client.get("/directions", params={"to": store.id}).text  # half-filled, as the shop links it
+        to_box = re.search(r'<input id="dir-to"[^>]*value="([^"]*)"', html).group(1)
+        assert to_box != store.id and store.id not in re.findall(r'value="([^"]*)"', html), to_box
+        html = client.get("/directions", params={"from": FLATIRON, "to": html_module.unescape(to_box)}).text
+        assert "Walking route from" in html, (store.id, to_box)
+    html = client.get("/directions", params={"from": FLATIRON, "to": TARGET}).text
+    assert re.search(r'<input id="dir-from"[^>]*value="Flatiron Building"', html)

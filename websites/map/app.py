@@ -112,11 +112,18 @@ def create_app(ctx: SiteContext, world: Any = None) -> Starlette:
         page_view(request)
         context: dict[str, Any] = {"origin_text": origin_text, "destination_text": destination_text,
                                    "via_text": via_text, "route": None, "errors": [], "choices": {}, "via": None}
+        # A field sent as a place id (a link from the shop, a did-you-mean choice) shows that place's name in
+        # the form, never the internal id; the id still travels in the page's links.
+        sent = {"from": origin_text, "to": destination_text, "via": via_text}
+        context["shown"] = {field: place.name for field, text in sent.items()
+                            if text and (place := places.place(text)) is not None}
         if not origin_text or not destination_text:
             return render(request, "directions.html", **context)  # an empty or half-filled form
         resolved: dict[str, Resolution] = {"from": places.resolve(origin_text), "to": places.resolve(destination_text)}
         if via_text:
             resolved["via"] = places.resolve(via_text)
+        # A field sent as a place id (a link from the shop, a did-you-mean choice) shows that place's name in
+        # the form, never the internal id; the id still travels in the page's links.
         for field, res in resolved.items():
             label = {"from": "Start", "to": "Destination", "via": "Via"}[field]
             if res.error:
