@@ -297,7 +297,9 @@ async def count_calls() -> dict[str, Any]:
     from ewa_mcp.taskmodel import Task
     from ewa_mcp.web.chromium import chromium_service
     from ewa_mcp.web.env import BrowserEnvironment
-    from ewa_mcp.web.testsite import start_fixture_sites
+
+    sys.path.insert(0, str(ROOT / "tests"))  # the fixture site lives with the tests (tests/web/testsite.py)
+    from web.testsite import start_fixture_sites
 
     sent: collections.Counter[str] = collections.Counter()
     original = connection.Connection.send_message_to_server
@@ -309,7 +311,7 @@ async def count_calls() -> dict[str, Any]:
 
     connection.Connection.send_message_to_server = counting  # type: ignore[method-assign]
     sites = start_fixture_sites()
-    services = Services({})
+    services = Services()
     await services.get("websites", lambda _: sites)
     await services.get("chromium", chromium_service)
     task = Task.model_validate({"id": "calls", "domain": "demo", "intent": "count",
