@@ -37,7 +37,9 @@ class StallOnce(OracleAgent):
 
     async def play(self, s):
         if s.task.id == self.target and not self.marker.exists():
-            self.marker.write_text(str(os.getpid()))
+            partial = self.marker.with_suffix(".partial")  # written then renamed: the test never reads it half-written
+            partial.write_text(str(os.getpid()))
+            partial.replace(self.marker)
             await anyio.sleep(120)
         await super().play(s)
 
@@ -52,12 +54,15 @@ def grades(run_dir: Path) -> dict[str, tuple]:
     return {e.task_id: (e.overall_success, tuple(c.met for c in e.conditions)) for e in grade_run(run_dir).episodes}
 
 
+def grades_in_one_process(tasks, run_dir: Path) -> dict[str, tuple]:
+    """The oracle's grades for these tasks played in this process: what every other way of running must match."""
+    anyio.run(lambda: run_eval(tasks, OracleAgent(), run_dir=run_dir, task_dirs=[tasks_dir()], progress=False))
+    return grades(run_dir)
+
+
 @pytest.fixture(scope="module")
 def one_process_grades(tmp_path_factory):
-    run_dir = tmp_path_factory.mktemp("one-process")
-    anyio.run(lambda: run_eval(small_tasks(), OracleAgent(), run_dir=run_dir, task_dirs=[tasks_dir()],
-                               progress=False))
-    return grades(run_dir)
+    return grades_in_one_process(small_tasks(), tmp_path_factory.mktemp("one-process"))
 
 
 def drive_until_stalled(play, marker: Path) -> tuple[threading.Thread, dict, int]:
