@@ -7,19 +7,17 @@ from __future__ import annotations
 import sys
 from collections import Counter
 
-import anyio
 import pytest
 
 ray = pytest.importorskip("ray", reason="Ray is the optional extra ewa-mcp[ray] (in the test extra)")
 
-from ewa_mcp.evaluation.agents import OracleAgent  # noqa: E402
 from ewa_mcp.evaluation.ray_eval import ACTOR_PREFIX, INCOMING, play_on_ray  # noqa: E402
-from ewa_mcp.evaluation.runner import run_eval, select_tasks  # noqa: E402
+from ewa_mcp.evaluation.runner import select_tasks  # noqa: E402
 from ewa_mcp.evaluation.scale import RayOptions  # noqa: E402
 from ewa_mcp.paths import tasks_dir  # noqa: E402
 from ewa_mcp.taskmodel import TaskStore  # noqa: E402
 
-from .test_eval_workers import StallOnce, drive_until_stalled, grades, landed  # noqa: E402
+from .test_eval_workers import StallOnce, drive_until_stalled, grades, grades_in_one_process, landed  # noqa: E402
 
 
 def ray_tasks():
@@ -40,10 +38,7 @@ def cluster():
 
 @pytest.fixture(scope="module")
 def one_process_grades(tmp_path_factory):
-    run_dir = tmp_path_factory.mktemp("one-process")
-    anyio.run(lambda: run_eval(ray_tasks(), OracleAgent(), run_dir=run_dir, task_dirs=[tasks_dir()],
-                               progress=False))
-    return grades(run_dir)
+    return grades_in_one_process(ray_tasks(), tmp_path_factory.mktemp("one-process"))
 
 
 def test_ray_actor_killed_mid_episode_its_episode_lands_once(cluster, one_process_grades, tmp_path):

@@ -6,6 +6,7 @@ from __future__ import annotations
 import importlib.util
 import json
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -24,18 +25,25 @@ def load_example(name: str):
     return module
 
 
-@pytest.mark.parametrize("example, key", [("claude_agent", "ANTHROPIC_API_KEY"), ("openai_agent", "OPENAI_API_KEY")])
-def test_example_agent_plays_and_records(example, key, tmp_path, monkeypatch):
-    monkeypatch.setenv(key, "test-key")
-    module = load_example(example)
-    model = ScriptedModel(SCRIPT)
-    run_dir = tmp_path / "run"
+EXAMPLES = [("claude_agent", "ANTHROPIC_API_KEY"), ("openai_agent", "OPENAI_API_KEY")]
+
+
+def run_example(example: str, model: ScriptedModel, run_dir, *args: str) -> tuple[int, Path]:
+    """Run an example agent against the scripted model; its exit code and its one episode's directory."""
     with FakeLLMServer(model) as server:
         base = server.url + ("" if example == "claude_agent" else "/v1")
-        rc = module.main(["--model", "scripted", "--base-url", base, "--tasks", "demo-hello",
-                          "--transport", "inprocess", "--run-dir", str(run_dir), "-q"])
-    assert rc == 0
+        rc = load_example(example).main(["--model", "scripted", "--base-url", base, "--run-dir", str(run_dir),
+                                         "-q", *args])
     (episode,) = [p for p in run_dir.iterdir() if p.is_dir()]
+    return rc, episode
+
+
+@pytest.mark.parametrize("example, key", EXAMPLES)
+def test_example_agent_plays_and_records(example, key, tmp_path, monkeypatch):
+    monkeypatch.setenv(key, "test-key")
+    model = ScriptedModel(SCRIPT)
+    rc, episode = run_example(example, model, tmp_path / "run", "--tasks", "demo-hello", "--transport", "inprocess")
+    assert rc == 0
     final = json.loads((episode / "final_state.json").read_text())
     assert final["status"] == "finished" and final["answer"] == "hello"
     tools = [json.loads(x)["tool"] for x in (episode / "trajectory.jsonl").read_text().splitlines()]
@@ -53,7 +61,7 @@ def test_example_agent_plays_and_records(example, key, tmp_path, monkeypatch):
     assert "this episode has no environment" in second or "step 0/10" in second
 
 
-@pytest.mark.parametrize("example, key", [("claude_agent", "ANTHROPIC_API_KEY"), ("openai_agent", "OPENAI_API_KEY")])
+@pytest.mark.parametrize("example, key", EXAMPLES)
 def test_example_agent_plays_a_task_oracle_over_stdio_and_scores_one(example, key, tmp_path, monkeypatch):
     """The scripted-model trick of the Inspect tests, through each example's own path: the model's tool calls
     are a real task's oracle, the server is the default `ewa-mcp serve` over stdio, the grader scores 1.0."""
@@ -64,13 +72,8 @@ def test_example_agent_plays_a_task_oracle_over_stdio_and_scores_one(example, ke
     monkeypatch.setenv(key, "test-key")
     task = TaskStore([tasks_dir()]).all("geolocation")[0]
     model = ScriptedModel([(call.tool, dict(call.args)) for call in task.oracle])
-    run_dir = tmp_path / "run"
-    with FakeLLMServer(model) as server:
-        base = server.url + ("" if example == "claude_agent" else "/v1")
-        rc = load_example(example).main(["--model", "scripted", "--base-url", base, "--tasks", task.id,
-                                         "--run-dir", str(run_dir), "-q"])  # default transport: stdio
+    rc, episode = run_example(example, model, tmp_path / "run", "--tasks", task.id)  # default transport: stdio
     assert rc == 0
-    (episode,) = [p for p in run_dir.iterdir() if p.is_dir()]
     result = grade_episode(episode)
     assert result.overall_success and result.completion == 1.0, (result.error, result.conditions_met)
     assert result.geolocation and all(result.geolocation.get(level) for level in ("continent", "country", "city"))
@@ -78,7 +81,7 @@ def test_example_agent_plays_a_task_oracle_over_stdio_and_scores_one(example, ke
     assert tools == ["start_episode", *(call.tool for call in task.oracle)]
 
 
-@pytest.mark.parametrize("example, key", [("claude_agent", "ANTHROPIC_API_KEY"), ("openai_agent", "OPENAI_API_KEY")])
+@pytest.mark.parametrize("example, key", EXAMPLES)
 def test_example_agent_plays_in_a_worker_process(example, key, tmp_path, monkeypatch):
     """--workers: the agent (its adapter factory) is pickled into a worker process that plays the episode."""
     monkeypatch.setenv(key, "test-key")
@@ -92,15 +95,10 @@ def test_example_agent_plays_in_a_worker_process(example, key, tmp_path, monkeyp
         return real(tasks, agent, **kw)
 
     monkeypatch.setattr(workers, "play_in_processes", spy)
-    module = load_example(example)
     model = ScriptedModel(SCRIPT)
-    run_dir = tmp_path / "run"
-    with FakeLLMServer(model) as server:
-        base = server.url + ("" if example == "claude_agent" else "/v1")
-        rc = module.main(["--model", "scripted", "--base-url", base, "--tasks", "demo-hello",
-                          "--transport", "inprocess", "--workers", "2", "--run-dir", str(run_dir), "-q"])
+    rc, episode = run_example(example, model, tmp_path / "run", "--tasks", "demo-hello", "--transport", "inprocess",
+                              "--workers", "2")
     assert rc == 0 and len(seen) == 1
-    (episode,) = [p for p in run_dir.iterdir() if p.is_dir()]
     final = json.loads((episode / "final_state.json").read_text())
     assert final["status"] == "finished" and final["answer"] == "hello"
     assert len(model.requests) == 3  # the model was asked from the worker process, once per turn
