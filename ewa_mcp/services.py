@@ -27,12 +27,15 @@ class Services:
         self.emit_event: EventSink | None = emit_event
         self._items: dict[str, Any] = {}
         self._closers: list[Callable[[], Any]] = []
-        self._lock = anyio.Lock()
+        self._locks: dict[str, anyio.Lock] = {}
 
     async def get(self, name: str, factory: Callable[["Services"], Awaitable[Any] | Any]) -> Any:
+        """The service ``name``, made by ``factory`` on first use (one maker at a time per name). A
+        factory may get other services; each is closed after the ones made with it (last made,
+        first closed), so the browser closes before the sites it was launched for."""
         if name in self._items:
             return self._items[name]
-        async with self._lock:
+        async with self._locks.setdefault(name, anyio.Lock()):
             if name not in self._items:
                 value = factory(self)
                 if inspect.isawaitable(value):

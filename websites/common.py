@@ -93,3 +93,30 @@ def exception_handlers(ctx: SiteContext) -> dict[Any, Callable[..., Any]]:
         return error_page(500, "The site hit an internal error.", ctx)
 
     return {HTTPException: http_error, Exception: server_error}
+
+
+class NoStoreHtml:
+    """ASGI wrapper: every HTML page goes out with ``Cache-Control: no-store``.
+
+    The pages are per episode (a cart, an order) and each view of one is an event the graders read
+    (``page_view``), so the browser must fetch every page it shows, going back and forward included,
+    as sites with per-user pages ask. Images keep their own caching headers."""
+
+    def __init__(self, app: Any):
+        self.app = app
+
+    async def __call__(self, scope: Any, receive: Any, send: Any) -> None:
+        if scope["type"] != "http":
+            await self.app(scope, receive, send)
+            return
+
+        async def send_no_store(message: Any) -> None:
+            if message["type"] == "http.response.start":
+                headers = list(message.get("headers", []))
+                content_type = next((v for k, v in headers if k.lower() == b"content-type"), b"")
+                if content_type.startswith(b"text/html") and not any(k.lower() == b"cache-control" for k, _ in headers):
+                    message = {**message, "headers": [*headers, (b"cache-control", b"no-store")]}
+            await send(message)
+
+        await self.app(scope, receive, send_no_store)
+

@@ -17,7 +17,7 @@ from typing import Any
 
 import uvicorn
 
-from .common import SiteContext
+from .common import NoStoreHtml, SiteContext
 from .sites import DECLARED
 
 log = logging.getLogger("ewa_mcp.websites")
@@ -60,7 +60,7 @@ class SiteServer:
         if emit is not None:
             kwargs["emit"] = emit
         self.context = SiteContext(**kwargs)
-        self.apps = {name: factory(self.context) for name, factory in factories.items()}
+        self.apps = {name: NoStoreHtml(factory(self.context)) for name, factory in factories.items()}
         self._servers: list[uvicorn.Server] = []
         self._thread: threading.Thread | None = None
         self._ready = threading.Event()

@@ -119,11 +119,15 @@ class BrowserActions:
             s.active = s.tabs.index(tab)
             current = tab
         if current.page.url.startswith("chrome-error:"):
-            # A redirect got as far as an error page: step back to where the agent was.
+            # The browser's guard failed the navigation (a link, a form or a redirect off-site) and
+            # the tab shows its error page: step back to where the agent was, which is no new visit.
+            s.restoring = True
             try:
                 await current.page.go_back(wait_until="load")
             except PlaywrightError:
                 pass
+            finally:
+                s.restoring = False
         raise EnvError(f"{action_name} led to {url[:200]}, which is refused: only the embedded sites are "
                        f"reachable ({s.policy.describe_allowed() if s.policy else ''}); the page is "
                        "unchanged")

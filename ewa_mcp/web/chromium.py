@@ -148,17 +148,20 @@ class BrowserService:
     ``launches`` counts launches so that an environment can tell that the browser its
     context lived in is gone and rebuild its tabs in the new one.
 
-    Network guard: every non-loopback request is sent to a proxy that refuses connections (a
-    loopback port we hold bound but never listen on). Playwright's request routing does not
-    see redirects, so this is what stops a redirect to another host; ``<-loopback>`` also
-    removes Chromium's implicit proxy bypass of link-local addresses (cloud metadata).
-    ``direct_hosts`` (from the browser allowlist) are reached without the proxy."""
+    The request guard: Chromium sends every request to a proxy that refuses connections (a
+    loopback port we hold bound but never listen on), except requests to ``allowed_origins``
+    (the embedded sites and the browser allowlist, matched on scheme, host and port), which go
+    direct. ``<-loopback>`` removes Chromium's implicit bypass of loopback and link-local
+    addresses, so another loopback port (this server's own HTTP port, any local service) and
+    cloud metadata addresses are refused too. Being the browser's own network layer, it also
+    covers redirects, sub-resources, popups and requests made by scripts, and it costs no
+    interception round trip per request (``context.route`` did: docs/web.md)."""
 
-    def __init__(self, info: ChromiumInfo, headless: bool = True, direct_hosts: list[str] | tuple[str, ...] = (),
+    def __init__(self, info: ChromiumInfo, headless: bool = True, allowed_origins: list[str] | tuple[str, ...] = (),
                  pool: ContextPool | None = None, collector: IdleCollector | None = None):
         self.info = info
         self.headless = headless
-        self.direct_hosts = list(direct_hosts)
+        self.allowed_origins = list(allowed_origins)
         self.launches = 0
         self._guard = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
         self._guard.bind(("127.0.0.1", 0))  # bound, never listening: connecting is refused at once
@@ -199,7 +202,7 @@ class BrowserService:
         self.launches += 1
 
     def launch_args(self) -> list[str]:
-        bypass = ["<-loopback>", "127.0.0.1", "localhost", "[::1]", *self.direct_hosts]
+        bypass = ["<-loopback>", *(bypass_rule(origin) for origin in self.allowed_origins)]
         return [*self.info.launch_args(), f"--proxy-server=http://127.0.0.1:{self._guard.getsockname()[1]}",
                 f"--proxy-bypass-list={';'.join(bypass)}"]
 
@@ -242,21 +245,33 @@ class BrowserService:
         self._guard.close()
 
 
+def bypass_rule(origin: str) -> str:
+    """Chromium's proxy-bypass rule for exactly one origin: scheme, host and (effective) port."""
+    from urllib.parse import urlsplit
+
+    parts = urlsplit(origin)
+    port = parts.port or {"http": 80, "https": 443}[parts.scheme]
+    host = parts.hostname or ""
+    return f"{parts.scheme}://{f'[{host}]' if ':' in host else host}:{port}"
+
+
 async def chromium_service(services: Any) -> BrowserService:
     """Services factory: ``await services.get("chromium", chromium_service)``.
 
     Reads ``services.settings`` (the browser options: executable, headless, the pool's and the idle
-    collector's settings, config.py; EWA_CHROMIUM) and launches at once
-    so that a missing or broken browser is reported by the first web episode, not its first action."""
-    from urllib.parse import urlsplit
-
-    from .safety import normalize_origin
+    collector's settings, config.py; EWA_CHROMIUM) and the embedded sites' URLs (the websites
+    service, started here when it is not yet: the request guard needs their ports at launch), and
+    launches at once so that a missing or broken browser is reported by the first web episode, not
+    its first action."""
+    from ..websites.serve import site_service
+    from .safety import UrlPolicy
 
     settings = services.settings
     browser = settings.browser
-    direct = [urlsplit(normalize_origin(origin)).hostname or "" for origin in browser.allow_origins]
+    sites = await services.get("websites", site_service)
+    origins = UrlPolicy(sites.urls, browser.allow_origins).allowed_origins
     service = BrowserService(find_chromium(settings.chromium_path(), browser.headless), headless=browser.headless,
-                             direct_hosts=[h for h in direct if h],
+                             allowed_origins=origins,
                              pool=ContextPool(keep_idle=browser.pool_keep_idle, idle_s=browser.pool_idle_s),
                              collector=IdleCollector(every_s=browser.idle_gc_s))
     await service.browser()

@@ -107,7 +107,7 @@ class ContextPool:
     async def give_back(self, warm: WarmContext, origins: Iterable[str]) -> bool:
         """Scrub ``warm`` and keep it for the next episode; close it when that is not possible.
 
-        The caller has already removed its own listeners and routes."""
+        The caller has already removed its own listeners."""
         if (warm.broken or warm.page is None or warm.page.is_closed() or warm.uses + 1 >= self.max_uses
                 or len(self._idle) + self._scrubbing >= self.max_idle):
             await self._close(warm)

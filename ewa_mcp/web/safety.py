@@ -1,9 +1,10 @@
 """Which URLs the browser may reach: the embedded sites, plus an explicit allowlist.
 
 Checked twice: ``UrlPolicy.check`` refuses a bad ``browser_goto``/``browser_new_tab`` before
-anything happens, and ``route_pattern()`` (a regex of everything *not* allowed) is installed with
-``context.route`` so links, redirects, sub-resources and popups to other places are aborted
-by the browser too. Link-local and cloud-metadata addresses are refused even when allowlisted.
+anything happens, and the browser is launched with ``allowed_origins`` as the only destinations
+its network reaches (chromium.py: everything else goes to a proxy that refuses connections), so
+links, redirects, sub-resources, popups and scripts' requests to other places fail in the
+browser too. Link-local and cloud-metadata addresses are refused even when allowlisted.
 
 URLs are read the way Chromium reads them: with a WHATWG URL parser (``ada_url``, the parser of
 Node.js), never with ``urllib``, which disagrees on backslashes, userinfo, IPv4 shorthand
@@ -169,8 +170,3 @@ class UrlPolicy:
         except BlockedUrlError:
             return False
         return True
-
-    def route_pattern(self) -> re.Pattern[str]:
-        """Matches every URL the browser must not request (the allowed origins are excluded)."""
-        allowed = "|".join(re.escape(o) for o in self.allowed_origins) or "(?!)"
-        return re.compile(rf"^(?!(?:{allowed})(?:[/?#]|$))")

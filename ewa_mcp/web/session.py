@@ -1,10 +1,10 @@
 """An episode's browser session: its BrowserContext and the tabs in it.
 
-One job: the context's life. It takes a warm context from the pool (pool.py) or makes one, guards
-every request of it (safety.py), keeps the list of tabs (popups included) and the notices the
-agent has not seen, recovers after a crash (relaunch, reopen every tab at its last URL), and at
-the end hands the context back to the pool. The hand-over (removing this episode's request guard,
-then the pool's scrub) runs in the background so that ``finish_episode`` does not wait for it;
+One job: the context's life. It takes a warm context from the pool (pool.py) or makes one, notes
+every request of it that the browser's guard refuses (chromium.py, safety.py), keeps the list of
+tabs (popups included) and the notices the agent has not seen, recovers after a crash (relaunch,
+reopen every tab at its last URL), and at the end hands the context back to the pool. The
+hand-over (the pool's scrub) runs in the background so that ``finish_episode`` does not wait for it;
 the next episode that finds no idle context waits for a hand-over in flight instead of making a
 cold context (``Handovers``).
 
@@ -31,6 +31,7 @@ from .settle import PAGE_HOOKS_JS
 from .tabs import Tab, navigate, watch_page
 
 MAX_NOTICES = 12
+GUARDED_SCHEMES = ("http:", "https:", "ws:", "wss:")  # what goes through the network (and the guard)
 
 
 class Handovers:
@@ -73,18 +74,8 @@ class Handovers:
         await self.drain()
 
 
-async def _hand_back(pool: ContextPool, warm: WarmContext, context: Any, route: Any, handler: Any,
-                     origins: tuple[str, ...]) -> None:
-    """Remove the episode's request guard, then let the pool scrub and keep the context (or close it)."""
-    try:
-        if route is not None:
-            await context.unroute(route, handler)
-    except Exception:
-        try:  # a context we cannot detach from is never handed on
-            await context.close()
-        except Exception:
-            pass  # the browser is already gone
-        return
+async def _hand_back(pool: ContextPool, warm: WarmContext, origins: tuple[str, ...]) -> None:
+    """Let the pool scrub and keep the context (or close it)."""
     await pool.give_back(warm, origins)
 
 
@@ -100,7 +91,6 @@ class BrowserSession:
         self.policy: UrlPolicy | None = None
         self.context: Any = None
         self.warm: WarmContext | None = None  # the pool's record of self.context
-        self.route: Any = None  # the URL pattern our request guard is routed on
         self.tabs: list[Tab] = []
         self.active = 0
         self.history: list[str] = []
@@ -165,15 +155,15 @@ class BrowserSession:
             for tab in tabs:
                 tab.detach()
             context.remove_listener("page", self._on_page)
+            context.remove_listener("request", self._on_request)
             context.remove_listener("close", self._on_context_close)
             warm.watch(keep.page)
             if warm.cdp is None:
                 warm.cdp = keep.cdp
-            # Every origin the pages could have stored something for (the route refuses all others).
+            # Every origin the pages could have stored something for (the guard refuses all others).
             origins = tuple(self.policy.allowed_origins) if self.policy else ()
             handovers = await self.services.get("web-handovers", Handovers)
-            self.handover = handovers.start(
-                _hand_back(self.service.pool, warm, context, self.route, self.block_request, origins))
+            self.handover = handovers.start(_hand_back(self.service.pool, warm, origins))
             return
         try:
             await context.close()
@@ -204,16 +194,15 @@ class BrowserSession:
             context = await browser.new_context(
                 viewport={"width": self.config.viewport_width, "height": self.config.viewport_height},
                 accept_downloads=False,
-                service_workers="block",  # a service worker could answer requests the route never sees
+                service_workers="block",  # a service worker could answer requests from its cache
             )
             await context.add_init_script(PAGE_HOOKS_JS)
             self.warm = WarmContext(context, launch=self.launch_seen, key=key)
         context.set_default_timeout(self.config.action_timeout_s * 1000)
         context.set_default_navigation_timeout(self.config.navigation_timeout_s * 1000)
-        self.route = self.policy.route_pattern()
-        await asyncio.gather(context.set_extra_http_headers({EPISODE_HEADER: self.episode_id}),
-                             context.route(self.route, self.block_request))
+        await context.set_extra_http_headers({EPISODE_HEADER: self.episode_id})
         context.on("page", self._on_page)
+        context.on("request", self._on_request)
         context.on("close", self._on_context_close)
         self.context = context
         self.context_closed = False
@@ -222,26 +211,25 @@ class BrowserSession:
         if context is self.context:
             self.context_closed = True
 
-    # ------------------------------------------------------------ request guard and notices
-    async def block_request(self, route: Any) -> None:
-        request = route.request
+    # ------------------------------------------------------------ refused requests and notices
+    def _on_request(self, request: Any) -> None:
+        """Note a request the browser's guard refuses (chromium.py): every one outside the allowed
+        origins. The guard itself fails it; this records it, and a refused navigation of a tab's
+        main frame makes the action report it and step the tab back (actions.py)."""
         url = request.url
-        is_nav = False
+        if not url.startswith(GUARDED_SCHEMES) or self.policy is None or self.policy.is_allowed(url):
+            return  # data:, blob:, about: never reach the network
         try:
-            is_nav = request.is_navigation_request()
-            main = request.frame.parent_frame is None
+            main_nav = request.is_navigation_request() and request.frame.parent_frame is None
         except Exception:
-            main = False
+            main_nav = False
         if len(self.blocked) < 500:
             self.blocked.append(url)
-        if is_nav and main:
+        if main_nav:
             self.blocked_nav = url
-            self.notice(f"navigation to {url[:120]} was refused (not an embedded site)")
-            # ERR_ABORTED leaves the current document in place instead of showing an error page.
-            await route.abort("aborted")
         else:
-            self.notice(f"a request to {url[:120]} was blocked (not an embedded site)")
-            await route.abort("blockedbyclient")
+            what = "a redirect" if request.redirected_from is not None else "a request"
+            self.notice(f"{what} to {url[:120]} was blocked (not an embedded site)")
 
     def notice(self, text: str) -> None:
         if text not in self.notices and len(self.notices) < MAX_NOTICES:

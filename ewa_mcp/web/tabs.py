@@ -103,7 +103,6 @@ def watch_page(session: BrowserSession, page: Any, uid: int) -> Tab:
     tab.listen("close", lambda _page: setattr(tab, "closed", True))
     tab.listen("dialog", partial(_on_dialog, session))
     tab.listen("download", partial(_on_download, session))
-    tab.listen("request", partial(_on_request, session, tab))
     return tab
 
 
@@ -118,23 +117,6 @@ def _on_navigated(session: BrowserSession, tab: Tab, frame: Any) -> None:
     tab.last_url = url
     if not session.restoring and url != "about:blank" and not url.startswith("chrome-error:"):
         session.history.append(url)
-
-
-def _on_request(session: BrowserSession, tab: Tab, request: Any) -> None:
-    # Routing never sees redirect hops; the browser's proxy guard fails them, and this
-    # notices the ones that would have moved the page so that the action reports it.
-    if request.redirected_from is None or session.policy is None or session.policy.is_allowed(request.url):
-        return
-    try:
-        is_main_nav = request.is_navigation_request() and request.frame == tab.page.main_frame
-    except Exception:
-        is_main_nav = False
-    if len(session.blocked) < 500:
-        session.blocked.append(request.url)
-    if is_main_nav:
-        session.blocked_nav = request.url
-    else:
-        session.notice(f"a redirect to {request.url[:120]} was blocked (not an embedded site)")
 
 
 async def _on_dialog(session: BrowserSession, dialog: Any) -> None:

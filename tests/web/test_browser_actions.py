@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import http.server
 import io
+import threading
 
 import pytest
 from PIL import Image
@@ -224,6 +226,52 @@ async def test_links_and_redirects_off_site_are_refused_and_page_kept(web_servic
     assert {"http://example.com/tracker.png", "http://169.254.169.254/pixel.png", "http://example.com/",
             "http://example.com/landing", "http://169.254.169.254/latest/meta-data/"} <= set(state["blocked"])
     await env.close()
+
+
+async def test_other_loopback_services_are_unreachable_from_the_pages(web_services):
+    """Only the sites' own ports are reachable: a service listening on another loopback port (this
+    server's HTTP port, anything local) gets no request from a page's script, image or link."""
+    hits: list[str] = []
+
+    class Counting(http.server.BaseHTTPRequestHandler):
+        def do_GET(self) -> None:  # noqa: N802 - the stdlib's name
+            hits.append(self.path)
+            self.send_response(200)
+            self.send_header("Content-Type", "text/html")
+            self.end_headers()
+            self.wfile.write(b"<title>local service</title>")
+
+        def log_message(self, *args: object) -> None:
+            pass
+
+    service = http.server.ThreadingHTTPServer(("127.0.0.1", 0), Counting)
+    threading.Thread(target=service.serve_forever, daemon=True).start()
+    port = service.server_address[1]
+    env = await open_env(web_services)
+    try:
+        start = env.tabs[0].page.url
+        for url in (f"http://127.0.0.1:{port}/fetch", f"http://localhost:{port}/fetch"):
+            reached = await env.tabs[0].page.evaluate(
+                "url => fetch(url, {mode: 'no-cors'}).then(() => true, () => false)", url)
+            assert reached is False, url
+        await env.tabs[0].page.evaluate(
+            """port => {
+                const img = document.createElement('img'); img.src = `http://127.0.0.1:${port}/pixel.png`;
+                const a = document.createElement('a'); a.href = `http://127.0.0.1:${port}/page`;
+                a.textContent = 'Local service'; document.body.append(img, a);
+            }""", port)
+        with pytest.raises(EnvError, match="refused.*the page is unchanged"):
+            await env.click("link 'Local service'")
+        assert env.tabs[0].page.url == start and len(env.tabs) == 1
+        assert hits == []
+        state = await env.final_state()
+        assert {f"http://127.0.0.1:{port}/fetch", f"http://127.0.0.1:{port}/pixel.png",
+                f"http://127.0.0.1:{port}/page"} <= set(state["blocked"])
+        assert state["history"] == [start]  # stepping back from the refused page is no new visit
+        assert (await env.observe()).data["title"] == "Fixture catalogue"
+    finally:
+        await env.close()
+        service.shutdown()
 
 
 async def test_downloads_and_dialogs_are_handled_and_reported(web_services):

@@ -178,15 +178,18 @@ def test_url_policy_refuses_with_reason_and_lists_sites(url, reason):
     assert "recipes:/ (http://127.0.0.1:8702)" in str(refused.value)
 
 
-def test_route_pattern_matches_only_what_is_not_allowed():
-    policy = UrlPolicy(SITES, ["http://10.0.0.5:9000"])
-    pattern = policy.route_pattern()
-    for allowed in ("http://127.0.0.1:8701/", "http://127.0.0.1:8702/a?b", "http://127.0.0.1:8701",
-                    "http://10.0.0.5:9000/x"):
-        assert not pattern.search(allowed), allowed
-    for blocked in ("http://127.0.0.1:87011/", "http://127.0.0.1:8701.evil.com/", "http://example.com/",
-                    "https://127.0.0.1:8701/", "http://169.254.169.254/"):
-        assert pattern.search(blocked), blocked
+def test_the_browser_guard_bypasses_exactly_the_allowed_origins():
+    """Chromium's proxy guard (chromium.py) lets through only the allowed origins, each matched on
+    scheme, host and port; everything else, other loopback ports included, goes to the dead proxy."""
+    policy = UrlPolicy(SITES, ["http://10.0.0.5:9000", "https://example.org"])
+    info = chromium.ChromiumInfo(path="/usr/bin/chromium", source="explicit")
+    args = chromium.BrowserService(info, allowed_origins=policy.allowed_origins).launch_args()
+    bypass = next(a for a in args if a.startswith("--proxy-bypass-list=")).split("=", 1)[1].split(";")
+    assert bypass == ["<-loopback>", "http://127.0.0.1:8701", "http://127.0.0.1:8702", "http://10.0.0.5:9000",
+                      "https://example.org:443"]
+    assert any(a.startswith("--proxy-server=http://127.0.0.1:") for a in args)
+    assert chromium.bypass_rule("http://example.org") == "http://example.org:80"
+    assert chromium.bypass_rule("http://[::1]:8000") == "http://[::1]:8000"
 
 
 def test_allowlist_validation():
