@@ -87,6 +87,8 @@ class UrlPolicy:
         self.site_origins = {normalize_origin(url): name for name, url in self.site_urls.items()}
         self.extra_origins = [normalize_origin(o) for o in extra_origins]
         self.allowed_origins = list(self.site_origins) + [o for o in self.extra_origins if o not in self.site_origins]
+        # A canonical (browser-serialised) URL starting with one of these is allowed without parsing.
+        self.allowed_prefixes = tuple(origin + "/" for origin in self.allowed_origins)
 
     # ------------------------------------------------------------ addressing
     def describe_allowed(self) -> str:

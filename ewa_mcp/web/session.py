@@ -217,8 +217,10 @@ class BrowserSession:
         origins. The guard itself fails it; this records it, and a refused navigation of a tab's
         main frame makes the action report it and step the tab back (actions.py)."""
         url = request.url
-        if not url.startswith(GUARDED_SCHEMES) or self.policy is None or self.policy.is_allowed(url):
+        if not url.startswith(GUARDED_SCHEMES) or self.policy is None:
             return  # data:, blob:, about: never reach the network
+        if url.startswith(self.policy.allowed_prefixes) or self.policy.is_allowed(url):
+            return  # Chromium's URLs are canonical: an allowed origin and a path is allowed
         try:
             main_nav = request.is_navigation_request() and request.frame.parent_frame is None
         except Exception:
