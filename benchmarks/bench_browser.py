@@ -9,8 +9,11 @@ return only a link to a snapshot file, so an agent needs the snapshot call to se
 
 The peer is installed into benchmarks/peer/ with npm on first run (package.json pins it), and
 runs twice: with its defaults, and with --timeout-settle 0 (it otherwise waits a fixed 500 ms
-after every action). Prints one JSON object: median and p95 per action and server, the
-observation size in characters, and whether the targets hold.
+after every action). A third runner, the floor, does the same steps with the Playwright library
+alone in this process (no MCP, no server: each action, then the AI-mode ARIA snapshot, elements
+by ``aria-ref``), on the same Chromium: what no server built on Playwright can go below on this
+machine. Prints one JSON object: median and p95 per action and runner, the observation size in
+characters, and whether the targets hold.
 
     .venv/bin/python benchmarks/bench_browser.py [--rounds 15] [--warmup 2] [--no-peer-settle0]
 """
@@ -170,6 +173,46 @@ class Peer(Driver):
         self.record("screenshot", ms, text, 0.0, record)
 
 
+class Floor(Driver):
+    """The floor under any server: the Playwright library in this process, no MCP, no server. Each
+    action is followed by the AI-mode ARIA snapshot (what every step of ours returns), elements are
+    found by the snapshot's ``aria-ref`` (as ours are), and a click that loads a page waits for its
+    ``load`` event. Its times are action + snapshot."""
+
+    def __init__(self, page: Any):
+        super().__init__("playwright library, no server (floor)", None)  # type: ignore[arg-type]
+        self.page = page
+
+    def ref(self, role: str, name: str) -> Any:
+        match = re.search(rf'{role} "{re.escape(name)}"[^\n]*\[ref=([A-Za-z0-9]+)\]', self.last)
+        if not match:
+            raise RuntimeError(f"{self.name}: no {role} '{name}' in its snapshot:\n{self.last[:1500]}")
+        return self.page.locator(f"aria-ref={match.group(1)}")
+
+    async def step(self, action: str, act: Any, record: bool) -> None:
+        start = time.perf_counter()
+        await act()
+        self.last = await self.page.aria_snapshot(mode="ai")
+        ms = (time.perf_counter() - start) * 1000
+        self.record(action, ms, self.last, 0.0, record)
+
+    async def round(self, urls: dict[str, str], record: bool) -> None:
+        page = self.page
+
+        async def click_and_load() -> None:
+            await self.ref("link", "Lentil Soup").click()
+            await page.wait_for_load_state("load")
+
+        await self.step("navigate", lambda: page.goto(urls["fixture"] + "/", wait_until="load"), record)
+        await self.step("click", click_and_load, record)
+        await self.step("back", lambda: page.go_back(wait_until="load"), record)
+        await self.step("type", lambda: self.ref("textbox", "Search items").fill("soup"), record)
+        await self.step("click_js", lambda: self.ref("button", "Mark done").click(), record)
+        start = time.perf_counter()
+        await page.screenshot()
+        self.record("screenshot", (time.perf_counter() - start) * 1000, "", 0.0, record)
+
+
 async def episodes(client: Client, count: int, warmup: int = 2) -> dict[str, Any]:
     """start_episode (first observation included) and finish_episode, one episode after another."""
     out: dict[str, Any] = {}
@@ -225,6 +268,13 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
                                         cwd=str(ROOT))
     peers = [("playwright-mcp", None)] + ([] if args.no_peer_settle0 else [("playwright-mcp --timeout-settle 0", 0)])
 
+    from playwright.async_api import async_playwright
+
+    from ewa_mcp.web.chromium import find_chromium as _find
+
+    playwright = await async_playwright().start()
+    floor_browser = await playwright.chromium.launch(executable_path=chromium, args=_find(chromium).launch_args())
+    floor_page = await (await floor_browser.new_context(viewport={"width": 1280, "height": 720})).new_page()
     async with Client(ours_params) as ours_client:
         started = await ours_client.call_tool("start_episode", {"task_id": "bench-web"})
         if started.is_error:
@@ -237,6 +287,7 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
                 await client.__aenter__()
                 clients.append(client)
                 drivers.append(Peer(name, client))
+            drivers.append(Floor(floor_page))
             for index in range(args.warmup + args.rounds):
                 # Alternate who goes first so neither gets a systematically warmer machine.
                 order = drivers if index % 2 == 0 else list(reversed(drivers))
@@ -246,6 +297,8 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
             for client in reversed(clients):
                 await client.__aexit__(None, None, None)
         lifecycle = await episodes(ours_client, args.episodes)
+    await floor_browser.close()
+    await playwright.stop()
     shutil.rmtree(tmp, ignore_errors=True)
 
     ours = drivers[0]
@@ -276,6 +329,9 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
         "every_action_at_or_below_peer_median": all(below.values()),
         "per_action_at_or_below_peer_median": below,
         "click_to_observation_median_ms": result["actions"]["click"][ours.name]["median_ms"],
+        # The same steps with the Playwright library alone (Floor): what no server can go below here.
+        "floor_click_to_observation_median_ms": result["actions"]["click"][drivers[-1].name]["median_ms"],
+        "floor_click_js_to_observation_median_ms": result["actions"]["click_js"][drivers[-1].name]["median_ms"],
         "click_js_to_observation_median_ms": result["actions"]["click_js"][ours.name]["median_ms"],
         "click_to_observation_le_60ms": result["actions"]["click"][ours.name]["median_ms"] <= 60
         and result["actions"]["click_js"][ours.name]["median_ms"] <= 60,
