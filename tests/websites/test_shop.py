@@ -187,6 +187,25 @@ def test_update_and_remove_cart_lines(app, sink):
     assert [e["type"] for ep, e in sink.events if e["type"].startswith("cart_")] == ["cart_update", "cart_remove"]
 
 
+def test_line_numbers_are_per_episode_and_never_reused(app):
+    """An episode's cart lines are numbered 1, 2, ... whatever other episodes did (no page shows how
+    many lines they made), and a removed line's number is not given to the next one."""
+    a, b = client(app, "ep-a"), client(app, "ep-b")
+    other, size = next((p, o.size) for p in catalog.load_products() if p.id != CHEDDAR
+                       for o in p.offers if o.stock > 0)
+    assert add(a).headers["location"].endswith("added=1")
+    assert add(a, other.id, size, in_stock_store(other.id, size)).headers["location"].endswith("added=2")
+    assert add(b).headers["location"].endswith("added=1")
+    assert c_remove(a, "1") == 200
+    assert add(a).headers["location"].endswith("added=3")
+    assert b.post("/wishlist/add", data={"product_id": CHEDDAR, "size": ""}).status_code in (200, 303)
+    assert 'name="item_id" value="1"' in b.get("/wishlist").text
+
+
+def c_remove(c: TestClient, line_id: str) -> int:
+    return c.post("/cart/remove", data={"line_id": line_id}).status_code
+
+
 def test_quantity_zero_removes_the_line(app):
     c = client(app)
     line_id = add(c).headers["location"].split("=")[1]

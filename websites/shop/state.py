@@ -22,16 +22,24 @@ FIRST_ORDER_NUMBER = 1001
 FULFILMENTS = ("pickup", "delivery")
 
 SCHEMA = """
+-- line_id and item_id are numbered per episode (1, 2, ... as the episode adds them, never reused in
+-- it), so no page shows how many lines other episodes made and every episode sees the same numbers.
 CREATE TABLE IF NOT EXISTS cart_lines (
-    line_id INTEGER PRIMARY KEY AUTOINCREMENT,
-    episode TEXT NOT NULL, product_id TEXT NOT NULL, size TEXT NOT NULL, store_id TEXT NOT NULL,
+    episode TEXT NOT NULL, line_id INTEGER NOT NULL,
+    product_id TEXT NOT NULL, size TEXT NOT NULL, store_id TEXT NOT NULL,
     quantity INTEGER NOT NULL CHECK (quantity > 0),
+    PRIMARY KEY (episode, line_id),
     UNIQUE (episode, product_id, size, store_id)
 );
 CREATE TABLE IF NOT EXISTS wishlist_items (
-    item_id INTEGER PRIMARY KEY AUTOINCREMENT,
-    episode TEXT NOT NULL, product_id TEXT NOT NULL, size TEXT NOT NULL DEFAULT '',
+    episode TEXT NOT NULL, item_id INTEGER NOT NULL,
+    product_id TEXT NOT NULL, size TEXT NOT NULL DEFAULT '',
+    PRIMARY KEY (episode, item_id),
     UNIQUE (episode, product_id, size)
+);
+CREATE TABLE IF NOT EXISTS episode_numbers (
+    episode TEXT NOT NULL, kind TEXT NOT NULL, last INTEGER NOT NULL,
+    PRIMARY KEY (episode, kind)
 );
 CREATE TABLE IF NOT EXISTS orders (
     episode TEXT NOT NULL, order_id TEXT NOT NULL, number INTEGER NOT NULL, store_id TEXT NOT NULL,
@@ -136,6 +144,12 @@ class ShopState:
         self._db.row_factory = sqlite3.Row
         self._lock = threading.Lock()  # one connection, used from the server thread and test threads
         with self._lock:
+            for table, key in (("cart_lines", "line_id"), ("wishlist_items", "item_id")):
+                columns = [row[1] for row in self._db.execute(f"PRAGMA table_info({table})")]
+                if columns and columns[0] == key:
+                    # A database kept from before per-episode numbering (--site-data-dir): its carts and
+                    # wishlists numbered lines across episodes; they are per-episode scratch, so they go.
+                    self._db.execute(f"DROP TABLE {table}")
             self._db.executescript(SCHEMA)
 
     def close(self) -> None:
@@ -145,6 +159,13 @@ class ShopState:
     def _query(self, sql: str, params: tuple[Any, ...] = ()) -> list[sqlite3.Row]:
         with self._lock:
             return self._db.execute(sql, params).fetchall()
+
+    def _next_number(self, episode: str, kind: str) -> int:
+        """The episode's next cart-line or wishlist number (the caller holds the lock)."""
+        self._db.execute("INSERT INTO episode_numbers (episode, kind, last) VALUES (?, ?, 1) "
+                         "ON CONFLICT (episode, kind) DO UPDATE SET last = last + 1", (episode, kind))
+        row = self._db.execute("SELECT last FROM episode_numbers WHERE episode=? AND kind=?", (episode, kind))
+        return int(row.fetchone()["last"])
 
     # ------------------------------------------------------------ validation
     @staticmethod
@@ -204,10 +225,14 @@ class ShopState:
             raise ShopError(f"{store.name} has only {left} of {product.name} ({size}) in stock; "
                             f"lower the quantity or choose another store.", 409)
         with self._lock:
-            self._db.execute(
-                "INSERT INTO cart_lines (episode, product_id, size, store_id, quantity) VALUES (?, ?, ?, ?, ?) "
-                "ON CONFLICT (episode, product_id, size, store_id) DO UPDATE SET quantity = excluded.quantity",
-                (episode, product_id, size, store_id, new_quantity))
+            if existing:
+                self._db.execute("UPDATE cart_lines SET quantity=? WHERE episode=? AND product_id=? AND size=? "
+                                 "AND store_id=?", (new_quantity, episode, product_id, size, store_id))
+            else:
+                self._db.execute(
+                    "INSERT INTO cart_lines (episode, line_id, product_id, size, store_id, quantity) "
+                    "VALUES (?, ?, ?, ?, ?, ?)",
+                    (episode, self._next_number(episode, "cart"), product_id, size, store_id, new_quantity))
         return next(line for line in self.cart(episode)
                     if (line.product.id, line.size, line.store.id) == (product_id, size, store_id))
 
@@ -336,8 +361,10 @@ class ShopState:
     def add_to_wishlist(self, episode: str, product_id: str, size: str) -> WishlistItem:
         product = self._product_size(product_id, size) if size else self._product(product_id)
         with self._lock:
-            self._db.execute("INSERT OR IGNORE INTO wishlist_items (episode, product_id, size) VALUES (?, ?, ?)",
-                             (episode, product_id, size))
+            if not self._db.execute("SELECT 1 FROM wishlist_items WHERE episode=? AND product_id=? AND size=?",
+                                    (episode, product_id, size)).fetchall():
+                self._db.execute("INSERT INTO wishlist_items (episode, item_id, product_id, size) VALUES (?, ?, ?, ?)",
+                                 (episode, self._next_number(episode, "wishlist"), product_id, size))
         return next(i for i in self.wishlist(episode) if i.product.id == product.id and i.size == size)
 
     def remove_from_wishlist(self, episode: str, item_id: int) -> WishlistItem:
@@ -355,7 +382,7 @@ class ShopState:
     # ------------------------------------------------------------ episodes
     def reset_episode(self, episode: str) -> None:
         with self._lock:
-            for table in ("cart_lines", "wishlist_items", "orders", "order_items"):
+            for table in ("cart_lines", "wishlist_items", "orders", "order_items", "episode_numbers"):
                 self._db.execute(f"DELETE FROM {table} WHERE episode=?", (episode,))  # table names are constants
 
     def snapshot(self, episode: str) -> dict[str, Any]:
