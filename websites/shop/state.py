@@ -225,7 +225,9 @@ class ShopState:
             raise ShopError(f"{store.name} has only {left} of {product.name} ({size}) in stock; "
                             f"lower the quantity or choose another store.", 409)
         with self._lock:
-            if existing:
+            # Looked up again under the lock: another request of the episode may have added the line meanwhile.
+            if self._db.execute("SELECT 1 FROM cart_lines WHERE episode=? AND product_id=? AND size=? AND store_id=?",
+                                (episode, product_id, size, store_id)).fetchall():
                 self._db.execute("UPDATE cart_lines SET quantity=? WHERE episode=? AND product_id=? AND size=? "
                                  "AND store_id=?", (new_quantity, episode, product_id, size, store_id))
             else:
