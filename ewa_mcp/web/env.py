@@ -9,7 +9,7 @@ relaunched on the next call and the episode's tabs are reopened at their last UR
 ``BrowserEnvironment`` is the class the registry names; it holds one episode's parts, split the
 way microsoft/playwright-mcp splits Context, Tab and Response:
 
-* session.py: the context's life (warm pool, request guard, tab list, crash recovery, hand-back);
+* session.py: the context's life (warm pool, refused requests, tab list, crash recovery, hand-back);
 * tabs.py: a tab's events, navigation, snapshot and element locating;
 * actions.py: the actions and the settling after them;
 * observation.py: the observation built from a snapshot (and a screenshot).
