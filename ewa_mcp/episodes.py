@@ -136,6 +136,8 @@ class EpisodeManager:
         # name -> class; defaults to the registry, tests may inject their own.
         self._env_classes = environments
         self._episodes: dict[str, Episode] = {}
+        # Episodes whose environments are being reset: the sites' events of their start pages land too.
+        self._starting: dict[str, Episode] = {}
         self.event_listeners: list[Callable[[str, dict[str, Any]], None]] = []
 
     # ------------------------------------------------------------ lifecycle
@@ -165,12 +167,14 @@ class EpisodeManager:
         recorder.write_task(task.model_dump(mode="json"))
         episode = Episode(id=episode_id, task=task, recorder=recorder, options=options, active=task.start.environment,
                           environment_names=dict(needed))
+        self._starting[episode_id] = episode
         try:
             for kind, cls in classes.items():
                 env = cls(episode, self.services)
                 episode.environments[kind] = env
                 await env.reset(task, options)
         except BaseException as exc:
+            self._starting.pop(episode_id, None)
             for env in episode.environments.values():
                 with anyio.CancelScope(shield=True):
                     await env.close()
@@ -181,6 +185,7 @@ class EpisodeManager:
         if episode.active not in episode.environments and episode.environments:
             episode.active = next(iter(episode.environments))
         self._episodes[episode_id] = episode
+        self._starting.pop(episode_id, None)
         return episode
 
     def get(self, episode_id: str) -> Episode:
@@ -377,7 +382,7 @@ class EpisodeManager:
 
     def emit_event(self, episode_id: str, event: dict[str, Any]) -> None:
         """Called by the embedded sites (any thread) to record a per-episode web event."""
-        episode = self._episodes.get(episode_id)
+        episode = self._episodes.get(episode_id) or self._starting.get(episode_id)
         if episode is not None:
             episode.web_events.append(event)
             episode.recorder.event(event)

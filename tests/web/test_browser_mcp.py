@@ -82,7 +82,9 @@ async def test_browser_tools_through_mcp(server):
     assert web["site_history"][0] == "home:/" and web["history"][1] == match.group(3)
     # The homepage saw this episode's header: its page views landed in this episode's event log.
     events = [json.loads(line) for line in (run_dir / episode / "web_events.jsonl").read_text().splitlines()]
-    assert sum(1 for e in events if e.get("site") == "home" and e.get("type") == "page_view") >= 1
+    assert sum(1 for e in events if e.get("site") == "home" and e.get("type") == "page_view") >= 2
+    # The start page, loaded while the episode was being started, is recorded too (nothing is lost).
+    assert (events[0]["site"], events[0]["type"], events[0]["path"]) == ("home", "page_view", "/")
     steps = [json.loads(line) for line in (run_dir / episode / "trajectory.jsonl").read_text().splitlines()]
     assert [s["tool"] for s in steps if s["tool"].startswith("browser_")][:3] == [
         "browser_snapshot", "browser_goto", "browser_click"]
