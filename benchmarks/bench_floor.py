@@ -21,7 +21,6 @@ from __future__ import annotations
 
 import argparse
 import asyncio
-import collections
 import json
 import os
 import re
@@ -30,6 +29,8 @@ import threading
 import time
 from pathlib import Path
 from typing import Any
+
+from bench_memory import descendants  # the process tree under this one, read from /proc
 
 HZ = os.sysconf("SC_CLK_TCK")
 # Tools whose step loads a new document (the start of a web episode loads the start page).
@@ -48,24 +49,6 @@ def _cpu_ticks(pid: int) -> int | None:
     return int(fields[11]) + int(fields[12])  # utime + stime
 
 
-def _descendants(root: int) -> set[int]:
-    children: dict[int, list[int]] = collections.defaultdict(list)
-    for entry in os.listdir("/proc"):
-        if entry.isdigit():
-            try:
-                text = Path(f"/proc/{entry}/stat").read_text()
-            except OSError:
-                continue
-            children[int(text[text.rfind(")") + 2:].split()[1])].append(int(entry))
-    found, todo = {root}, [root]
-    while todo:
-        for child in children.get(todo.pop(), []):
-            if child not in found:
-                found.add(child)
-                todo.append(child)
-    return found
-
-
 class CpuMeter:
     """CPU seconds of this process and all its descendants between start() and stop(), sampled
     every 100 ms so that processes that come and go are counted."""
@@ -77,7 +60,7 @@ class CpuMeter:
         self._thread: threading.Thread | None = None
 
     def _sample(self, first: bool = False) -> None:
-        for pid in _descendants(os.getpid()):
+        for pid in descendants(os.getpid()):
             ticks = _cpu_ticks(pid)
             if ticks is None:
                 continue

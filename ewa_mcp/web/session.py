@@ -25,7 +25,7 @@ from ..websites.serve import site_service
 from .chromium import BrowserService, ChromiumNotFoundError, chromium_service
 from .config import BrowserConfig
 from .elements import ElementRegistry
-from .pool import ContextPool, WarmContext
+from .pool import WarmContext
 from .safety import BlockedUrlError, UrlPolicy, normalize_origin
 from .settle import PAGE_HOOKS_JS
 from .tabs import Tab, navigate, watch_page
@@ -72,11 +72,6 @@ class Handovers:
 
     async def aclose(self) -> None:
         await self.drain()
-
-
-async def _hand_back(pool: ContextPool, warm: WarmContext, origins: tuple[str, ...]) -> None:
-    """Let the pool scrub and keep the context (or close it)."""
-    await pool.give_back(warm, origins)
 
 
 class BrowserSession:
@@ -163,7 +158,7 @@ class BrowserSession:
             # Every origin the pages could have stored something for (the guard refuses all others).
             origins = tuple(self.policy.allowed_origins) if self.policy else ()
             handovers = await self.services.get("web-handovers", Handovers)
-            self.handover = handovers.start(_hand_back(self.service.pool, warm, origins))
+            self.handover = handovers.start(self.service.pool.give_back(warm, origins))
             return
         try:
             await context.close()
