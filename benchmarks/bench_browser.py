@@ -248,7 +248,7 @@ def peer_params(chromium: str, workdir: Path, settle_ms: int | None) -> StdioSer
 
 
 async def run(args: argparse.Namespace) -> dict[str, Any]:
-    from ewa_mcp.web.chromium import find_chromium
+    from ewa_mcp.envs.browser.chromium import find_chromium
 
     chromium = find_chromium().path
     peer_version = ensure_peer()
@@ -270,7 +270,7 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
 
     from playwright.async_api import async_playwright
 
-    from ewa_mcp.web.chromium import find_chromium as _find
+    from ewa_mcp.envs.browser.chromium import find_chromium as _find
 
     playwright = await async_playwright().start()
     floor_browser = await playwright.chromium.launch(executable_path=chromium, args=_find(chromium).launch_args())
@@ -349,10 +349,10 @@ async def count_calls() -> dict[str, Any]:
 
     from playwright._impl import connection  # the one place every message goes out (a private module)
 
-    from ewa_mcp.services import Services
-    from ewa_mcp.taskmodel import Task
-    from ewa_mcp.web.chromium import chromium_service
-    from ewa_mcp.web.env import BrowserEnvironment
+    from ewa_mcp.core.services import Services
+    from ewa_mcp.core.taskmodel import Task
+    from ewa_mcp.envs.browser.chromium import chromium_service
+    from ewa_mcp.envs.browser.env import BrowserEnvironment
 
     sys.path.insert(0, str(ROOT / "tests"))  # the fixture site lives with the tests (tests/web/testsite.py)
     from web.testsite import start_fixture_sites

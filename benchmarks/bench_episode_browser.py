@@ -26,11 +26,11 @@ import time
 from types import SimpleNamespace
 from typing import Any
 
-from ewa_mcp.services import Services
+from ewa_mcp.core.services import Services
 from ewa_mcp.settings import load_settings
-from ewa_mcp.taskmodel import Task
-from ewa_mcp.web import chromium
-from ewa_mcp.web.env import BrowserEnvironment
+from ewa_mcp.core.taskmodel import Task
+from ewa_mcp.envs.browser import chromium
+from ewa_mcp.envs.browser.env import BrowserEnvironment
 from ewa_mcp.websites.serve import site_service
 
 START = Task.model_validate({"id": "bench", "domain": "demo", "intent": "bench",

@@ -89,8 +89,8 @@ class CpuMeter:
 async def measure_steps(steps: int) -> dict[str, Any]:
     from playwright.async_api import async_playwright
 
-    from ewa_mcp.services import Services
-    from ewa_mcp.web.chromium import find_chromium
+    from ewa_mcp.core.services import Services
+    from ewa_mcp.envs.browser.chromium import find_chromium
     from ewa_mcp.websites.serve import site_service
 
     services = Services()

@@ -30,10 +30,10 @@ def summary(ms: list[float]) -> dict[str, float]:
 
 
 def bench_views(n: int) -> dict[str, Any]:
-    from ewa_mcp.geo.describe import describe_view
-    from ewa_mcp.geo.locations import LOCATIONS_LIST
-    from ewa_mcp.geo.view_images import render_png
-    from ewa_mcp.geo.scene import compose_view
+    from ewa_mcp.envs.geo.describe import describe_view
+    from ewa_mcp.envs.geo.locations import LOCATIONS_LIST
+    from ewa_mcp.envs.geo.view_images import render_png
+    from ewa_mcp.envs.geo.scene import compose_view
 
     rng = random.Random(3)
     compose, render, describe, sizes = [], [], [], []
@@ -65,7 +65,7 @@ class WikiStandIn:
         return None
 
     async def observe(self):
-        from ewa_mcp.environment import Observation
+        from ewa_mcp.core.environment import Observation
 
         return Observation(text="(wiki)")
 
@@ -77,10 +77,10 @@ class WikiStandIn:
 
 
 async def bench_episodes(real_web: bool) -> dict[str, Any]:
-    from ewa_mcp.graders.geo import aggregate_geolocation, grade_geolocation
+    from ewa_mcp.envs.geo.checks import aggregate_geolocation, grade_geolocation
     from mcp import Client
 
-    from ewa_mcp.geo.generate import generate_tasks
+    from ewa_mcp.envs.geo.taskgen.geolocation import generate_tasks
     from ewa_mcp.server import ServerConfig, build_server
 
     tmp = Path(tempfile.mkdtemp(prefix="bench-geo-"))
@@ -134,7 +134,7 @@ def main() -> None:
     args = parser.parse_args()
 
     from ewa_mcp.street_drawing.fonts import installed_scripts
-    from ewa_mcp.geo.locations import LOCATIONS_LIST
+    from ewa_mcp.envs.geo.locations import LOCATIONS_LIST
 
     out: dict[str, Any] = {"locations": len(LOCATIONS_LIST), "native_scripts": installed_scripts()}
     out["views"] = bench_views(args.views)

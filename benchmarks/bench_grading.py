@@ -18,7 +18,7 @@ from pathlib import Path
 
 from ewa_mcp.graders import grade_run
 from ewa_mcp.graders.report_tables import render
-from ewa_mcp.records import EpisodeRecorder
+from ewa_mcp.core.records import EpisodeRecorder
 
 PLATE = "Plate|+0.00|+0.90|-1.00"
 

@@ -20,12 +20,12 @@ from typing import Any
 
 import anyio
 
-from ewa_mcp.indoor.observe import build_observation
-from ewa_mcp.indoor.planner import check_recipe_executable
-from ewa_mcp.indoor.kitchen_map import png_bytes, render_topdown
-from ewa_mcp.indoor.scenes import SCENE_NAMES, _generate
-from ewa_mcp.indoor.session import KitchenSession
-from ewa_mcp.indoor.sim import KitchenSim
+from ewa_mcp.envs.kitchen.observe import build_observation
+from ewa_mcp.envs.kitchen.planner import check_recipe_executable
+from ewa_mcp.envs.kitchen.kitchen_map import png_bytes, render_topdown
+from ewa_mcp.envs.kitchen.scenes import SCENE_NAMES, _generate
+from ewa_mcp.envs.kitchen.session import KitchenSession
+from ewa_mcp.envs.kitchen.sim import KitchenSim
 
 N = int(os.environ.get("BENCH_N", "300"))
 SCENE = "FloorPlan12"
@@ -125,8 +125,8 @@ async def bench_mcp() -> dict[str, float]:
 
 def bench_ai2thor() -> dict[str, Any]:
     try:
-        from ewa_mcp.indoor.ai2thor_backend import Ai2ThorController
-        from ewa_mcp.indoor.standin import standin_command
+        from ewa_mcp.envs.kitchen.ai2thor_backend import Ai2ThorController
+        from ewa_mcp.envs.kitchen.standin import standin_command
     except ImportError:
         return {"skipped": "ai2thor is not installed (pip install 'ewa-mcp[ai2thor]')"}
     out: dict[str, Any] = {}

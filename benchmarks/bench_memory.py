@@ -21,7 +21,7 @@ With ``--browse`` each episode first loads three recipe pages (a search, a click
 page), as an agent would before pausing to think; without it they idle on their start page.
 
 Open episodes are read twice: 3 s after the last one opened (``just_opened``) and after idling
-``--idle-wait-s`` seconds (the main figures), which gives the idle collector (ewa_mcp/web/idlegc.py)
+``--idle-wait-s`` seconds (the main figures), which gives the idle collector (ewa_mcp/envs/browser/idlegc.py)
 time to see every page quiet for a whole period.
 
     .venv/bin/python benchmarks/bench_memory.py [--counts 1,16,64] [--open-concurrency 8] [--idle-s S]

@@ -21,8 +21,8 @@ from pathlib import Path
 from ewa_mcp.evaluation.agents import OracleAgent
 from ewa_mcp.evaluation.runner import play, select_tasks
 from ewa_mcp.graders import grade_run
-from ewa_mcp.paths import tasks_dir
-from ewa_mcp.taskmodel import TaskStore
+from ewa_mcp.core.paths import tasks_dir
+from ewa_mcp.core.taskmodel import TaskStore
 
 
 def main() -> None:

@@ -28,9 +28,9 @@ def summary(ms: list[float]) -> dict[str, float]:
 
 
 async def bench_env(world, moves: int, mode: str) -> dict[str, object]:
-    from ewa_mcp.outdoor.env import StreetEnvironment
-    from ewa_mcp.services import Services
-    from ewa_mcp.taskmodel import Task
+    from ewa_mcp.envs.street.env import StreetEnvironment
+    from ewa_mcp.core.services import Services
+    from ewa_mcp.core.taskmodel import Task
 
     rng = random.Random(7)
     graph = world.city("manhattan")
@@ -75,8 +75,8 @@ def bench_routes(world, pairs: int) -> dict[str, object]:
 
 
 def bench_render(world, n: int) -> dict[str, object]:
-    from ewa_mcp.outdoor.street_view import render_png
-    from ewa_mcp.outdoor.scene import compute_scene
+    from ewa_mcp.envs.street.street_view import render_png
+    from ewa_mcp.envs.street.scene import compute_scene
 
     rng = random.Random(5)
     graph = world.city("manhattan")
@@ -100,10 +100,10 @@ def bench_render(world, n: int) -> dict[str, object]:
 async def bench_mcp(world, n: int) -> dict[str, object]:
     from mcp import Client
 
-    from ewa_mcp import registry
+    from ewa_mcp.core import registry
     from ewa_mcp.server import ServerConfig, build_server
 
-    registry.tool_groups = lambda: ["ewa_mcp.tools.core", "ewa_mcp.tools.street"]
+    registry.tool_groups = lambda: ["ewa_mcp.core.lifecycle", "ewa_mcp.envs.street.tools"]
     with tempfile.TemporaryDirectory() as tmp:
         tasks = Path(tmp) / "tasks"
         tasks.mkdir()
@@ -137,7 +137,7 @@ def main() -> int:
     parser.add_argument("--mcp-moves", type=int, default=200)
     args = parser.parse_args()
     t = time.perf_counter()
-    from ewa_mcp.outdoor.world import get_world
+    from ewa_mcp.envs.street.world import get_world
 
     world = get_world()
     load_s = time.perf_counter() - t

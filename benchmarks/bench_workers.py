@@ -26,8 +26,8 @@ from ewa_mcp.evaluation.agents import OracleAgent
 from ewa_mcp.evaluation.runner import select_tasks
 from ewa_mcp.evaluation.workers import play_in_processes
 from ewa_mcp.graders import grade_run
-from ewa_mcp.paths import tasks_dir
-from ewa_mcp.taskmodel import TaskStore
+from ewa_mcp.core.paths import tasks_dir
+from ewa_mcp.core.taskmodel import TaskStore
 
 
 def cpu_seconds() -> float:

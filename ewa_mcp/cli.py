@@ -14,7 +14,7 @@ from . import __version__
 
 def _task_dirs_or_error(given: list[str] | None) -> list[Path] | None:
     """The task directories to use, or None after printing why there are none (the caller exits 2)."""
-    from .paths import TaskStoreMissing, check_task_dirs, tasks_dir
+    from .core.paths import TaskStoreMissing, check_task_dirs, tasks_dir
 
     dirs = [Path(p) for p in given] if given else [tasks_dir()]
     try:
@@ -32,7 +32,7 @@ def serve_flags(args: argparse.Namespace) -> dict[str, object]:
 
 
 def cmd_serve(args: argparse.Namespace) -> int:
-    from .paths import TaskStoreMissing, check_task_dirs, task_dirs
+    from .core.paths import TaskStoreMissing, check_task_dirs, task_dirs
     from .settings import SettingsError, load_settings
 
     try:
@@ -82,8 +82,8 @@ def cmd_sites(args: argparse.Namespace) -> int:
 
 
 def cmd_tasks(args: argparse.Namespace) -> int:
-    from .paths import generated_tasks_dir
-    from .taskmodel import TaskStore, export_json_schema
+    from .core.paths import generated_tasks_dir
+    from .core.taskmodel import TaskStore, export_json_schema
 
     if args.action == "schema":
         out = Path(args.output) if args.output else None
@@ -95,7 +95,7 @@ def cmd_tasks(args: argparse.Namespace) -> int:
             sys.stdout.write(text)
         return 0
     if args.action == "import-ewa":
-        from .outdoor.release import run_cli
+        from .envs.street.taskgen.release import run_cli
 
         return run_cli(args.paths, args.output, args.annotations)
     if args.paths:
@@ -140,7 +140,7 @@ def cmd_eval(args: argparse.Namespace) -> int:
     from .evaluation.agents import NoopAgent, OracleAgent, RandomAgent, ReplayAgent, ReplayError, load_replay
     from .evaluation.runner import EvalError, play_from_args, run_dir_from, select_tasks, task_dirs_from
     from .graders import grade_run, render_report
-    from .taskmodel import TaskStore
+    from .core.taskmodel import TaskStore
 
     if _task_dirs_or_error(args.tasks_dir) is None:
         return 2
@@ -175,7 +175,7 @@ def cmd_play(args: argparse.Namespace) -> int:
     from .evaluation.human import HumanAgent
     from .evaluation.runner import play, run_dir_from, task_dirs_from
     from .graders import grade_run, render_report
-    from .taskmodel import TaskStore
+    from .core.taskmodel import TaskStore
 
     if _task_dirs_or_error(args.tasks_dir) is None:
         return 2

@@ -35,14 +35,14 @@ from inspect_ai.solver import Generate, TaskState, solver
 from inspect_ai.tool import ToolDef, mcp_server_http, mcp_tools
 from mcp import Client
 
-from . import registry
+from .core import registry
 from .evaluation.llm import HIDDEN_TOOLS, NUDGE, SYSTEM_PROMPT
 from .evaluation.runner import EvalError, _free_port, select_tasks
-from .paths import TaskStoreMissing, check_task_dirs, runs_dir  # noqa: F401 (re-exported)
-from .paths import tasks_dir as default_tasks_dir
-from .records import new_run_id
+from .core.paths import TaskStoreMissing, check_task_dirs, runs_dir  # noqa: F401 (re-exported)
+from .core.paths import tasks_dir as default_tasks_dir
+from .core.records import new_run_id
 from .settings import child_server_env
-from .taskmodel import TaskStore
+from .core.taskmodel import TaskStore
 
 DOMAINS = tuple(registry.domain_names(scored_only=True))  # the suite task runs every scored domain
 GEO_LEVELS = ("continent", "country", "city", "street")

@@ -14,29 +14,35 @@ from mcp.server.mcpserver import MCPServer
 from mcp.server.mcpserver.exceptions import ToolError, UnexpectedToolError
 from pydantic import ValidationError
 
-from . import __version__, registry
-from .episodes import EpisodeManager
-from .paths import runs_dir, task_dirs
-from .records import new_run_id
-from .schemas import make_portable
-from .services import Services
+from . import __version__
+from .core import registry
+from .core.episodes import EpisodeManager
+from .core.paths import runs_dir, task_dirs
+from .core.records import new_run_id
+from .core.schemas import make_portable
+from .core.services import Services
 from .settings import Settings, load_settings
-from .taskmodel import TaskStore
-from .tools.adapter import check_declared
+from .core.taskmodel import TaskStore
+from .core.tool_table import check_declared
 
 log = logging.getLogger("ewa_mcp")
 
-INSTRUCTIONS = """\
-ewa-mcp: embodied web agent tasks. Protocol:
-1. list_tasks, then start_episode(task_id) -> an episode_id, the task intent and the first observation.
-2. Each episode has a web environment (browser_* tools) and/or an embodied one (kitchen_* or street_* tools).
-   Only the active one accepts actions; switch_environment(episode_id, target, message) changes it (it is a
-   recorded action, say why in message).
-3. Pass episode_id to every tool. get_observation shows the active environment again without acting.
-4. finish_episode(episode_id, answer) ends the episode (geolocation uses submit_location). A walk ends at
-   your first street_stop, or else at finish_episode: where you stand then is graded.
-5. Every call on a running episode is recorded and uses one step, failed calls included; steps are limited.
-"""
+def instructions() -> str:
+    """The server's instructions: the episode protocol, with what each registered environment adds."""
+    specs = registry.ordered_environments()
+    web = " or ".join(e.hint() for e in specs if e.side == "web") or "none"
+    embodied = " or ".join(e.hint() for e in specs if e.side == "embodied") or "none"
+    extra = "".join(f" {e.instructions}" for e in specs if e.instructions)
+    return (
+        "ewa-mcp: embodied web agent tasks. Protocol:\n"
+        "1. list_tasks, then start_episode(task_id) -> an episode_id, the task intent and the first observation.\n"
+        f"2. Each episode has a web environment ({web}) and/or an embodied one ({embodied}).\n"
+        "   Only the active one accepts actions; switch_environment(episode_id, target, message) changes it (it is a\n"
+        "   recorded action, say why in message).\n"
+        "3. Pass episode_id to every tool. get_observation shows the active environment again without acting.\n"
+        f"4. finish_episode(episode_id, answer) ends the episode.{extra}\n"
+        "5. Every call on a running episode is recorded and uses one step, failed calls included; steps are limited.\n"
+    )
 
 
 class EpisodeServer(MCPServer):
@@ -82,7 +88,7 @@ def build_server(config: ServerConfig | None = None) -> tuple[MCPServer, Episode
     # Imported task directories carry their street graphs in a streets/ folder (ewa-mcp tasks import-ewa).
     streets = [Path(d) / "streets" for d in tasks.roots if (Path(d) / "streets").is_dir()]
     if streets:
-        from .outdoor.world import use_street_data
+        from .envs.street.world import use_street_data
 
         use_street_data(streets)
     run_dir = settings.run_dir or (runs_dir(settings) / new_run_id())
@@ -101,10 +107,10 @@ def build_server(config: ServerConfig | None = None) -> tuple[MCPServer, Episode
             await episodes.aclose()
             await services.aclose()
 
-    mcp = EpisodeServer("ewa-mcp", instructions=INSTRUCTIONS, version=__version__, lifespan=lifespan)
+    mcp = EpisodeServer("ewa-mcp", instructions=instructions(), version=__version__, lifespan=lifespan)
     mcp.episodes = episodes
     for module_name in registry.tool_groups():
         importlib.import_module(module_name).register(mcp, episodes)
-    check_declared(mcp)  # every tool has a title and annotations (ewa_mcp/tools/adapter.py)
+    check_declared(mcp)  # every tool has a title and annotations (ewa_mcp/core/tool_table.py)
     make_portable(mcp)  # no $ref/$defs, closed argument objects: every client's converter accepts them
     return mcp, episodes

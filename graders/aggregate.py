@@ -20,7 +20,7 @@ GEO_LEVELS = ("continent", "country", "city", "street", "all_levels")
 
 def episode_completion(episode: EpisodeResult) -> float:
     """An episode's completion for the aggregate: 0 when it could not be graded. A geolocation
-    episode's is the fraction of its four levels right (graders/geo.py), as in its own result."""
+    episode's is the fraction of its four levels right (ewa_mcp/envs/geo/checks.py), as in its own result."""
     geo = episode.geolocation or {}
     value = geo.get("completion")
     if isinstance(value, int | float) and not isinstance(value, bool) and episode.completion is not None:
@@ -68,7 +68,7 @@ def geolocation_rows(episodes: list[EpisodeResult]) -> list[dict[str, Any]]:
 
 
 def geolocation_aggregate(episodes: list[EpisodeResult]) -> dict[str, Any] | None:
-    """Geolocation metrics come from graders/geo.py (aggregate_geolocation); a per-level Wilson
+    """Geolocation metrics come from ewa_mcp/envs/geo/checks.py (aggregate_geolocation); a per-level Wilson
     summary stands in only when that module lacks the function."""
     rows = geolocation_rows(episodes)
     if not rows:

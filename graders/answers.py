@@ -1,16 +1,16 @@
-"""Answer checks: text answers here; geolocation answers by graders/geo.py (the geolocation engineer's)."""
+"""Answer checks: text answers here; geolocation answers by ewa_mcp/envs/geo/checks.py (the geolocation engineer's)."""
 
 from __future__ import annotations
 
 import importlib
 from typing import Any
 
-from ewa_mcp.taskmodel import AnswerNumbers, GeoAnswer, TextAnswer
+from ewa_mcp.core.taskmodel import AnswerNumbers, GeoAnswer, TextAnswer
 
 from .models import ConditionResult
 from .textnorm import HEDGES, KNOWN_UNITS, find_spans, is_number, normalize, number_value, tokens
 
-GEO_MODULE = "ewa_mcp.graders.geo"
+GEO_MODULE = "ewa_mcp.envs.geo.checks"
 
 
 def check_text_answer(check: TextAnswer, answer: str | None) -> ConditionResult:
@@ -95,7 +95,7 @@ def geo_module() -> tuple[Any | None, str | None]:
         return importlib.import_module(GEO_MODULE), None
     except ModuleNotFoundError as exc:
         if exc.name in (GEO_MODULE, None):
-            return None, "not gradable: geo grader missing (graders/geo.py)"
+            return None, "not gradable: geo grader missing (ewa_mcp/envs/geo/checks.py)"
         return None, f"not gradable: geo grader failed to import ({exc})"
     except Exception as exc:  # a broken geo module must not take the whole report down
         return None, f"not gradable: geo grader failed to import ({type(exc).__name__}: {exc})"

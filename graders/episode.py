@@ -9,22 +9,12 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from ewa_mcp import registry
-from ewa_mcp.taskmodel import (
-    DomainGoal,
-    GeoAnswer,
-    ObjectIn,
-    ObjectState,
-    OrderPlaced,
-    PassedPlace,
-    ReachedPlace,
-    TextAnswer,
-)
+from ewa_mcp.core import registry
+from ewa_mcp.core.taskmodel import GeoAnswer, OrderPlaced, TextAnswer
 
-from . import kitchen, street, web
 from .answers import check_geo_answer, check_text_answer
 from .errors import Outcome, classify
-from .models import ConditionResult, EpisodeResult, NavigationResult
+from .models import CheckContext, ConditionResult, EpisodeResult, NavigationResult
 from .rundir import EpisodeRecord, TaskView, read_episode
 
 
@@ -70,45 +60,13 @@ def _embodied_state(record: EpisodeRecord) -> tuple[dict[str, Any] | None, str |
     return state, None
 
 
-def _embodied_conditions(
-    task: TaskView, record: EpisodeRecord, orders: list[dict[str, Any]], radius_m: float | None
-) -> tuple[list[ConditionResult], list[NavigationResult]]:
-    conditions: list[ConditionResult] = []
-    navigation: list[NavigationResult] = []
-    state, why_missing = _embodied_state(record)
-    for goal in task.embodied_goals:
-        unknown = None
-        if state is None:
-            unknown = why_missing
-        elif isinstance(goal, ObjectState | ObjectIn) and not isinstance(state.get("objects"), list):
-            unknown = f"the embodied final state ({state.get('name', '?')}) has no kitchen object list"
-        elif isinstance(goal, ReachedPlace | PassedPlace) and "lat" not in state and "node" not in state:
-            unknown = f"the embodied final state ({state.get('name', '?')}) has no street position"
-        if unknown is not None or state is None:
-            conditions.append(ConditionResult(side="embodied", kind=goal.kind, description=goal.kind, met=None,
-                                              note=unknown))
-        elif isinstance(goal, ObjectState):
-            conditions.append(kitchen.check_object_state(goal, state["objects"]))
-        elif isinstance(goal, ObjectIn):
-            conditions.append(kitchen.check_object_in(goal, state["objects"]))
-        elif isinstance(goal, ReachedPlace):
-            condition, nav = street.check_reached_place(goal, state, task.metadata, orders, radius_m)
-            conditions.append(condition)
-            navigation.append(nav)
-        elif isinstance(goal, PassedPlace):
-            conditions.append(street.check_passed_place(goal, state, radius_m))
-        elif isinstance(goal, DomainGoal):
-            conditions.append(_domain_check(goal, state))
-    return conditions, navigation
-
-
-def _domain_check(goal: DomainGoal, state: dict[str, Any]) -> ConditionResult:
-    """A goal kind a registered domain declares, graded by the check it names (ewa_mcp/registry.py)."""
+def _check(goal: Any, side: str, ctx: CheckContext) -> ConditionResult:
+    """Grade one goal with the check its world declares (``Domain.checks`` in the world's package)."""
     path = registry.goal_check(goal.kind)
     if path is None:  # the task validated when the domain was registered; this grader process lacks it
-        return ConditionResult(side="embodied", kind=goal.kind, description=goal.kind, met=None,
+        return ConditionResult(side=side, kind=goal.kind, description=goal.kind, met=None,
                                note=f"no registered domain checks goal kind {goal.kind!r}")
-    result = registry.load_object(path)(goal, state)
+    result = registry.load_object(path)(goal, ctx)
     if not isinstance(result, ConditionResult):
         raise TypeError(f"the check {path} returned {type(result).__name__}, not a ConditionResult")
     return result
@@ -116,6 +74,10 @@ def _domain_check(goal: DomainGoal, state: dict[str, Any]) -> ConditionResult:
 
 def _orders_for_pickup(task: TaskView, events: list[dict[str, Any]]) -> list[dict[str, Any]]:
     """The orders a pickup walk may refer to: those matching an order goal, or every order when there is none."""
+    if not events:
+        return []
+    from ewa_mcp.envs.browser import checks as web  # the shop's orders are the browser world's to read
+
     goals = [g for g in task.web_goals if isinstance(g, OrderPlaced)]
     if not goals:
         return web.orders(events)
@@ -152,12 +114,16 @@ def grade_record(record: EpisodeRecord, radius_m: float | None = None) -> Episod
                 conditions.append(ConditionResult(side="web", kind=goal.kind, description=goal.kind, met=None,
                                                   note="web_events.jsonl missing"))
             else:
-                conditions.append(web.check_web_goal(goal, record.events))
+                conditions.append(_check(goal, "web", CheckContext(state=None, why_no_state=None,
+                                                                    events=record.events, metadata=task.metadata)))
         if events_missing and task.web_goals:
             problems.append("web_events.jsonl missing: web goals cannot be checked")
         orders = _orders_for_pickup(task, record.events)
-        embodied_conditions, navigation = _embodied_conditions(task, record, orders, radius_m)
-        conditions.extend(embodied_conditions)
+        state, why_no_state = _embodied_state(record)
+        ctx = CheckContext(state=state, why_no_state=why_no_state, events=record.events, metadata=task.metadata,
+                           orders=orders, radius_m=radius_m)
+        conditions.extend(_check(goal, "embodied", ctx) for goal in task.embodied_goals)
+        navigation = ctx.navigation
         for bad in task.unreadable:
             kind = bad.raw.get("kind") if isinstance(bad.raw, dict) else None
             conditions.append(ConditionResult(side=bad.side, kind=str(kind or "?"), description="unreadable goal",
@@ -190,7 +156,7 @@ def grade_record(record: EpisodeRecord, radius_m: float | None = None) -> Episod
             overall = False  # a record that breaks its own format proves nothing (docs/grading.md)
         completion = sum(1 for c in conditions if c.met is True) / len(conditions) if conditions else None
         if geolocation is not None and isinstance(geolocation.get("completion"), float):
-            completion = geolocation["completion"]  # geolocation: the fraction of levels right (graders/geo.py)
+            completion = geolocation["completion"]  # geolocation: the fraction of levels right (ewa_mcp/envs/geo/checks.py)
 
     trajectory = record.trajectory
     steps = final.get("steps") if isinstance(final.get("steps"), int) else sum(

@@ -8,9 +8,8 @@ import re
 from dataclasses import dataclass
 from typing import Any
 
-from ewa_mcp.taskmodel import ReachedPlace
+from ewa_mcp.core.taskmodel import ReachedPlace
 
-from .kitchen import changed_off_task, goal_types
 from .models import ErrorClassification, ErrorGroup, NavigationResult
 from .rundir import EpisodeRecord
 from .trajectory import REPEAT_MIN, longest_repeat, page_loop, visits
@@ -165,6 +164,8 @@ def _misalignment(record: EpisodeRecord, outcome: Outcome, task: Any) -> str | N
     """The agent acted in the world, but not on what the web told it."""
     state = ((record.final_state or {}).get("environments") or {}).get("embodied") or {}
     if task.embodied_kind == "kitchen" and isinstance(state.get("objects"), list) and outcome.embodied_ok is False:
+        from ewa_mcp.envs.kitchen.checks import changed_off_task, goal_types  # the kitchen's own reading
+
         off = changed_off_task(state["objects"], goal_types(task.embodied_goals))
         if off:
             return f"changed {', '.join(off)}, which no goal of the task mentions"

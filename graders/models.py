@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass, field
 from typing import Any, Literal
 
 from pydantic import BaseModel, Field
@@ -21,6 +22,24 @@ class ConditionResult(BaseModel):
     met: bool | None
     detail: dict[str, Any] = Field(default_factory=dict)
     note: str | None = None
+
+
+@dataclass
+class CheckContext:
+    """What a goal check may read: only the episode's record (docs/grading.md). A check is declared by the
+    world that owns its goal kind (``Domain.checks``: kind -> "module:function(goal, ctx) -> ConditionResult")
+    and never raises on odd data: it returns ``met=None`` with a note."""
+
+    state: dict[str, Any] | None  # the embodied environment's final state, or None when there is none
+    why_no_state: str | None  # why ``state`` is None
+    events: list[dict[str, Any]]  # the sites' events (web_events.jsonl)
+    metadata: dict[str, Any]  # the task's metadata
+    orders: list[dict[str, Any]] = field(default_factory=list)  # the orders a pickup walk may refer to
+    radius_m: float | None = None  # overrides every street goal's radius when set
+    navigation: list[NavigationResult] = field(default_factory=list)  # street checks add their metrics here
+
+    def unknown(self, side: Side, goal: Any, why: str | None) -> ConditionResult:
+        return ConditionResult(side=side, kind=goal.kind, description=goal.kind, met=None, note=why)
 
 
 class NavigationResult(BaseModel):

@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from ewa_mcp import registry
+from ewa_mcp.core import registry
 
 from .aggregate import domain_aggregate, error_breakdown
 from .episode import grade_episode
@@ -20,7 +20,7 @@ class RunDirError(ValueError):
 
 
 def _domain_key(domain: str) -> tuple[int, str]:
-    """Report order: the registry's display order (ewa_mcp/registry.py), unknown domains last by name."""
+    """Report order: the registry's display order (ewa_mcp/core/registry.py), unknown domains last by name."""
     order = registry.domain_names()
     return (order.index(domain) if domain in order else len(order), domain)
 

@@ -13,8 +13,8 @@ from typing import Any
 
 from pydantic import TypeAdapter, ValidationError
 
-from ewa_mcp.records import FinalState, TrajectoryLine, WebEvent, record_problem
-from ewa_mcp.taskmodel import SCHEMA_VERSION, AnswerCheck, EmbodiedGoal, Task, WebGoal, has_web_environment
+from ewa_mcp.core.records import FinalState, TrajectoryLine, WebEvent, record_problem
+from ewa_mcp.core.taskmodel import SCHEMA_VERSION, AnswerCheck, EmbodiedGoal, Task, WebGoal, has_web_environment
 
 EPISODE_FILES = ("task.json", "trajectory.jsonl", "web_events.jsonl", "final_state.json")
 
@@ -59,7 +59,7 @@ class EpisodeRecord:
     events: list[dict[str, Any]]
     final_state: dict[str, Any] | None
     problems: list[str] = field(default_factory=list)
-    # Parts of the record that do not fit its declared format (ewa_mcp/records.py): the episode is then an
+    # Parts of the record that do not fit its declared format (ewa_mcp/core/records.py): the episode is then an
     # invalid_record failure, graded from what remained valid, and never crashes the run's grading.
     invalid: list[str] = field(default_factory=list)
 

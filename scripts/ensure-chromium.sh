@@ -2,7 +2,7 @@
 # Make sure a Chromium exists for Playwright: its own bundled browser if installed, else the
 # system Chromium (Debian/Ubuntu package "chromium", installed with apt when running as root).
 # Debian's "chromium-headless-shell" is added where apt can: headless episodes run ~35 % faster
-# in it (ewa_mcp/web/chromium.py prefers it); without it the full chromium is used.
+# in it (ewa_mcp/envs/browser/chromium.py prefers it); without it the full chromium is used.
 set -euo pipefail
 
 add_headless_shell() {

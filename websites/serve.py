@@ -107,14 +107,6 @@ class SiteServer:
 
     close = stop
 
-    # ------------------------------------------------------------ addressing
-    def resolve(self, url: str) -> str:
-        """Map a site-relative URL such as "recipes:/recipe/r001" to its loopback URL."""
-        site, sep, path = url.partition(":")
-        if sep and site in self.urls and not path.startswith("//"):
-            return self.urls[site] + (path or "/")
-        return url
-
     def origins(self) -> list[str]:
         return list(self.urls.values())
 

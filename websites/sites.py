@@ -28,4 +28,3 @@ DECLARED: tuple[Site, ...] = (
     Site("wiki", "ewa_mcp.websites.wiki.app:create_app", 8705, "Wiki",
          "An encyclopedia of landmarks, cities, countries, dishes and ingredients.", "/search"),
 )
-BY_NAME: dict[str, Site] = {site.name: site for site in DECLARED}

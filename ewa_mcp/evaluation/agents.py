@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ..taskmodel import Task, ToolCall
+from ewa_mcp.core.taskmodel import Task, ToolCall
 
 
 @dataclass

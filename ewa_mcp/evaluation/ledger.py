@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Hashable
 
-from ..taskmodel import Task
+from ewa_mcp.core.taskmodel import Task
 from .runner import EpisodeOutcome
 
 

@@ -186,7 +186,7 @@ def run_example(args: Any, agent: LLMAgent) -> int:
     """Select tasks, play them through the MCP server and leave a run directory for ewa-grade."""
     import sys
 
-    from ..taskmodel import TaskStore
+    from ewa_mcp.core.taskmodel import TaskStore
     from .runner import EvalError, play_from_args, run_dir_from, select_tasks, task_dirs_from
 
     task_dirs = task_dirs_from(args.tasks_dir)

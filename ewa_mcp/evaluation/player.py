@@ -9,7 +9,7 @@ from typing import Any
 
 from anyio.from_thread import start_blocking_portal
 
-from ..taskmodel import Task
+from ewa_mcp.core.taskmodel import Task
 from .runner import EpisodeOutcome, connect, play_episode
 
 

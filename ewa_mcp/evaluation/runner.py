@@ -19,7 +19,7 @@ import httpx
 from mcp import Client, StdioServerParameters
 
 from ..settings import child_server_env
-from ..taskmodel import Task, TaskStore
+from ewa_mcp.core.taskmodel import Task, TaskStore
 
 if TYPE_CHECKING:
     from .scale import RayOptions, ScaleOptions
@@ -212,14 +212,14 @@ async def run_eval(tasks: list[Task], agent: Any, *, transport: str = "inprocess
 
 
 def task_dirs_from(given: list[str] | None) -> list[Path]:
-    from ..paths import tasks_dir
+    from ewa_mcp.core.paths import tasks_dir
 
     return [Path(p) for p in given] if given else [tasks_dir()]
 
 
 def run_dir_from(given: str | None, prefix: str = "") -> Path:
-    from ..paths import runs_dir
-    from ..records import new_run_id
+    from ewa_mcp.core.paths import runs_dir
+    from ewa_mcp.core.records import new_run_id
 
     return Path(given) if given else runs_dir() / (prefix + new_run_id())
 

@@ -22,7 +22,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ..taskmodel import Task
+from ewa_mcp.core.taskmodel import Task
 from .ledger import Ledger
 from .runner import EpisodeOutcome, EvalError, EvalSummary, Progress
 

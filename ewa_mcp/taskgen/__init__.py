@@ -1,6 +1,6 @@
 """Deterministic task-suite generation (``ewa-mcp tasks generate``).
 
-Each domain names its generator in the registry (ewa_mcp/registry.py): ``Domain.generator``, a function
+Each domain names its generator in the registry (ewa_mcp/core/registry.py): ``Domain.generator``, a function
 ``generate() -> list[Task]`` (seeded, validated: a task whose goals cannot be reached is not returned, with
 an oracle solution made of real tool calls), whose tasks this module writes under ``tasks/<domain>/`` in
 chunks, replacing what was there; or ``Domain.writer``, a function ``(out_dir) -> int`` that writes its own
@@ -12,8 +12,8 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from .. import registry
-from ..taskmodel import Task
+from ..core import registry
+from ewa_mcp.core.taskmodel import Task
 
 CHUNK = 100
 

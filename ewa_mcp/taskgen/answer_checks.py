@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 
 from ..graders.textnorm import tokens
-from ..taskmodel import AnswerNumbers, TextAnswer
+from ewa_mcp.core.taskmodel import AnswerNumbers, TextAnswer
 
 # Longest answer that still counts as a short answer; the intent says so.
 SHORT_ANSWER_CHARS = 200

@@ -7,7 +7,7 @@ import random
 from typing import Any
 from urllib.parse import urlencode
 
-from ..taskmodel import ToolCall
+from ewa_mcp.core.taskmodel import ToolCall
 
 
 def rng_for(*parts: Any) -> random.Random:

@@ -9,8 +9,8 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from ewa_mcp.paths import tasks_dir
-from ewa_mcp.taskmodel import TaskStore
+from ewa_mcp.core.paths import tasks_dir
+from ewa_mcp.core.taskmodel import TaskStore
 
 HERE = Path(__file__).resolve().parent
 

@@ -10,8 +10,8 @@ from mcp.server.mcpserver import MCPServer
 from pydantic import Field
 
 
-from ewa_mcp.environment import EnvError, Environment, Observation
-from ewa_mcp.response import env_action
+from ewa_mcp.core.environment import EnvError, Environment, Observation
+from ewa_mcp.core.response import env_action
 
 
 class CounterEnv(Environment):

@@ -139,8 +139,8 @@ async def test_errors_quote_a_huge_value_only_in_part(server):
 async def test_geolocation_and_domain_tools_refuse_other_domains(tmp_path):
     """submit_location on a cooking episode, and a kitchen tool on a geolocation episode, are refused
     with an error that names the episode's own tools; the episode stays open."""
-    from ewa_mcp.taskmodel import TaskStore
-    from ewa_mcp.paths import tasks_dir
+    from ewa_mcp.core.taskmodel import TaskStore
+    from ewa_mcp.core.paths import tasks_dir
 
     store = TaskStore([tasks_dir()])
     cooking = next(t for t in store.all("cooking"))

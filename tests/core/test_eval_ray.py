@@ -14,8 +14,8 @@ ray = pytest.importorskip("ray", reason="Ray is the optional extra ewa-mcp[ray] 
 from ewa_mcp.evaluation.ray_eval import ACTOR_PREFIX, INCOMING, play_on_ray  # noqa: E402
 from ewa_mcp.evaluation.runner import select_tasks  # noqa: E402
 from ewa_mcp.evaluation.scale import RayOptions  # noqa: E402
-from ewa_mcp.paths import tasks_dir  # noqa: E402
-from ewa_mcp.taskmodel import TaskStore  # noqa: E402
+from ewa_mcp.core.paths import tasks_dir  # noqa: E402
+from ewa_mcp.core.taskmodel import TaskStore  # noqa: E402
 
 from .test_eval_workers import StallOnce, drive_until_stalled, grades, grades_in_one_process, landed  # noqa: E402
 

@@ -20,8 +20,8 @@ from ewa_mcp.evaluation.ledger import Ledger
 from ewa_mcp.evaluation.runner import EvalError, run_eval, select_tasks
 from ewa_mcp.evaluation.workers import STAGING, play_in_processes
 from ewa_mcp.graders import grade_run
-from ewa_mcp.paths import tasks_dir
-from ewa_mcp.taskmodel import TaskStore
+from ewa_mcp.core.paths import tasks_dir
+from ewa_mcp.core.taskmodel import TaskStore
 
 
 def small_tasks():

@@ -8,13 +8,13 @@ import json
 import pytest
 from mcp import Client
 
-from ewa_mcp import registry
+from ewa_mcp.core import registry
 from ewa_mcp.graders import grade_run
-from ewa_mcp.indoor.actions import TABLE, KitchenAction
-from ewa_mcp.indoor.commands import parse_command
+from ewa_mcp.envs.kitchen.actions import TABLE, KitchenAction
+from ewa_mcp.envs.kitchen.commands import parse_command
 from ewa_mcp.server import ServerConfig, build_server
 from ewa_mcp.taskgen import generate_all
-from ewa_mcp.taskmodel import Task, TaskStore
+from ewa_mcp.core.taskmodel import Task, TaskStore
 
 from .lamp_domain import DOMAIN
 
@@ -49,12 +49,13 @@ def test_an_unregistered_domain_its_start_and_goal_kinds_are_refused():
 def test_the_registration_line_loads_a_domain_package_on_first_use(monkeypatch):
     from . import lamp_domain
 
-    monkeypatch.setattr(registry, "DOMAIN_PACKAGES", [f"{lamp_domain.__name__}:DOMAIN"])  # the one line
+    monkeypatch.setattr(registry, "DOMAIN_PACKAGES",
+                        [*registry.DOMAIN_PACKAGES, f"{lamp_domain.__name__}:DOMAIN"])  # the one line
     monkeypatch.setattr(registry, "_loaded", False)
     monkeypatch.setattr(registry, "_registered", [])
     assert registry.domain_names()[-1] == "lighting" and registry.goal_check("lamp_lit") is not None
     assert Task.model_validate(lamp_task()).environment_names() == {"embodied": "lamp"}
-    assert "ewa_mcp.tools.browser" in registry.tool_groups() and registry.tool_groups()[-1].endswith(".tools")
+    assert "ewa_mcp.envs.browser.tools" in registry.tool_groups() and registry.tool_groups()[-1].endswith(".tools")
 
 
 def test_a_registered_domain_validates_its_tasks_but_not_typos(lighting):

@@ -52,7 +52,7 @@ def test_compass_points_and_words():
 
 def test_importing_geometry_loads_no_world_and_no_pillow():
     code = ("import sys, ewa_mcp.geometry; heavy = [m for m in sys.modules if m.startswith(('PIL', 'mcp', "
-            "'ewa_mcp.outdoor', 'ewa_mcp.geo.', 'pydantic'))]; print(heavy)")
+            "'ewa_mcp.envs.street', 'ewa_mcp.envs.geo.', 'pydantic'))]; print(heavy)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[]"
 

@@ -8,7 +8,7 @@ import tomllib
 from packaging.requirements import Requirement
 from packaging.utils import canonicalize_name
 
-from ewa_mcp.paths import REPO_ROOT
+from ewa_mcp.core.paths import REPO_ROOT
 
 
 def _lock() -> dict[str, str]:

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import tomllib
 
-from ewa_mcp.paths import REPO_ROOT
+from ewa_mcp.core.paths import REPO_ROOT
 
 
 def test_every_package_is_listed():

@@ -1,4 +1,4 @@
-"""The registry (ewa_mcp/registry.py) is the one list of domains and environments, and the committed task
+"""The registry (ewa_mcp/core/registry.py) is the one list of domains and environments, and the committed task
 suite keeps to what each domain declares."""
 
 from __future__ import annotations
@@ -9,12 +9,12 @@ from pathlib import Path
 
 import pytest
 
-from ewa_mcp import registry
-from ewa_mcp.environment import Environment
-from ewa_mcp.paths import tasks_dir
-from ewa_mcp.response import environment_for_tool
+from ewa_mcp.core import registry
+from ewa_mcp.core.environment import Environment
+from ewa_mcp.core.paths import tasks_dir
+from ewa_mcp.core.response import environment_for_tool
 from ewa_mcp.taskgen import generated_domains
-from ewa_mcp.taskmodel import Task, TaskStore, export_json_schema, has_web_environment
+from ewa_mcp.core.taskmodel import Task, TaskStore, export_json_schema, has_web_environment
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -53,9 +53,13 @@ def test_every_environment_loads_lazily_and_matches_its_declaration():
 
 
 def test_the_domain_list_exists_once():
+    # Read from the worlds' own declarations, in the order of their registration lines: no second copy here.
+    from ewa_mcp import envs
+
     names = registry.domain_names()
-    assert names == ["navigation", "shopping", "traveling", "cooking", "geolocation", "demo"]
-    assert set(generated_domains()) == set(names) - {"demo"}
+    assert names == [d.name for path in envs.PACKAGES for d in registry.load_object(path)]
+    assert set(names) == {folder.name for folder in tasks_dir().iterdir() if folder.is_dir()}
+    assert set(generated_domains()) == {d.name for d in registry.domains() if d.generator or d.writer}
     from ewa_mcp.inspect_tasks import DOMAINS
 
     assert list(DOMAINS) == registry.domain_names(scored_only=True)

@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from ewa_mcp import cli
-from ewa_mcp.paths import REPO_ROOT, runs_dir, task_dirs
+from ewa_mcp.core.paths import REPO_ROOT, runs_dir, task_dirs
 from ewa_mcp.server import ServerConfig, build_server
 from ewa_mcp.settings import Settings, SettingsError, child_server_env, load_settings
 

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from ewa_mcp.outdoor.world import get_world
+from ewa_mcp.envs.street.world import get_world
 from ewa_mcp.websites.shop import catalog
 
 TASKS_DIR = Path(__file__).resolve().parents[2] / "tasks"

@@ -8,7 +8,7 @@ import sys
 
 SCRIPT = """
 import json
-from ewa_mcp.taskgen import traveling
+from ewa_mcp.envs.street.taskgen import traveling
 print(json.dumps([t.model_dump(mode="json") for t in traveling.generate()], sort_keys=True))
 """
 

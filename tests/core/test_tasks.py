@@ -8,8 +8,8 @@ import re
 import pytest
 
 from ewa_mcp.cli import main
-from ewa_mcp.paths import REPO_ROOT
-from ewa_mcp.taskmodel import Task, TaskFileError, TaskStore, export_json_schema, load_task_file
+from ewa_mcp.core.paths import REPO_ROOT
+from ewa_mcp.core.taskmodel import Task, TaskFileError, TaskStore, export_json_schema, load_task_file
 
 from .fixtures import counter_task
 
@@ -70,9 +70,9 @@ def test_validate_reports_bad_dir(tmp_path, capsys):
 
 def test_every_walking_intent_says_how_the_walk_ends():
     """Issue 15: navigation intents said "stop", shopping intents did not; one sentence now says it everywhere."""
-    from ewa_mcp.paths import tasks_dir
+    from ewa_mcp.core.paths import tasks_dir
     from ewa_mcp.taskgen.common import WALK_RULE
-    from ewa_mcp.taskmodel import TaskStore
+    from ewa_mcp.core.taskmodel import TaskStore
 
     walks = [t for t in TaskStore([tasks_dir()]).all()
              if t.start.embodied is not None and t.start.embodied.kind == "street"]
@@ -96,8 +96,8 @@ def _forms(value: str) -> set[str]:
 
 
 def test_no_task_id_names_its_target():
-    from ewa_mcp.paths import tasks_dir
-    from ewa_mcp.taskmodel import TaskStore
+    from ewa_mcp.core.paths import tasks_dir
+    from ewa_mcp.core.taskmodel import TaskStore
 
     checked = 0
     for task in TaskStore([tasks_dir()]).all():

@@ -1,5 +1,5 @@
 """Every listed tool has a title and MCP annotations declared through the tool adapter
-(ewa_mcp/tools/adapter.py); looks are read-only, actions are not, nothing is open-world."""
+(ewa_mcp/core/tool_table.py); looks are read-only, actions are not, nothing is open-world."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ from mcp.server.mcpserver import MCPServer
 
 
 from .fixtures import listed_tools
-from ewa_mcp.tools.adapter import check_declared, define_tool, tool_annotations
+from ewa_mcp.core.tool_table import check_declared, define_tool, tool_annotations
 
 LOOKS = {"get_observation", "street_observe", "geo_look", "browser_snapshot", "browser_screenshot",
          "episode_status", "list_tasks"}

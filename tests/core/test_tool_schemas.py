@@ -10,7 +10,7 @@ import json
 
 import pytest
 
-from ewa_mcp.schemas import SchemaError, close_objects, inline_refs
+from ewa_mcp.core.schemas import SchemaError, close_objects, inline_refs
 
 from .fixtures import listed_tools
 

@@ -23,7 +23,7 @@ from pathlib import Path
 
 import pytest
 
-from ewa_mcp.paths import REPO_ROOT, in_checkout
+from ewa_mcp.core.paths import REPO_ROOT, in_checkout
 
 pytestmark = pytest.mark.slow
 
@@ -67,7 +67,7 @@ def venv(tmp_path_factory) -> Path:
 
 
 def test_installed_command_sees_every_task_and_plays_one(venv, tmp_path):
-    where = _run([str(venv / "bin" / "python"), "-c", "import ewa_mcp.paths as p; print(p.tasks_dir()); "
+    where = _run([str(venv / "bin" / "python"), "-c", "import ewa_mcp.core.paths as p; print(p.tasks_dir()); "
                   "print(p.generated_tasks_dir())"], cwd=tmp_path)
     tasks_dir, generated = where.stdout.split()
     assert str(venv) in tasks_dir, where  # the wheel's own suites, not the checkout's

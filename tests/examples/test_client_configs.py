@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 from mcp import Client, StdioServerParameters
 
-from ewa_mcp.paths import REPO_ROOT
+from ewa_mcp.core.paths import REPO_ROOT
 
 pytestmark = pytest.mark.anyio
 

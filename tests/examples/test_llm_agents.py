@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from ewa_mcp.paths import REPO_ROOT
+from ewa_mcp.core.paths import REPO_ROOT
 
 from .fake_llm import FakeLLMServer, ScriptedModel
 
@@ -66,8 +66,8 @@ def test_example_agent_plays_a_task_oracle_over_stdio_and_scores_one(example, ke
     """The scripted-model trick of the Inspect tests, through each example's own path: the model's tool calls
     are a real task's oracle, the server is the default `ewa-mcp serve` over stdio, the grader scores 1.0."""
     from ewa_mcp.graders import grade_episode
-    from ewa_mcp.paths import tasks_dir
-    from ewa_mcp.taskmodel import TaskStore
+    from ewa_mcp.core.paths import tasks_dir
+    from ewa_mcp.core.taskmodel import TaskStore
 
     monkeypatch.setenv(key, "test-key")
     task = TaskStore([tasks_dir()]).all("geolocation")[0]

@@ -8,17 +8,17 @@ from collections import Counter
 
 from ewa_mcp.websites.wiki import store
 
-from ewa_mcp.geo import gazetteer
-from ewa_mcp.geo.articles import country_title, write_articles
-from ewa_mcp.geo.cities import CITIES
-from ewa_mcp.geo.countries import COUNTRIES
-from ewa_mcp.geo.generate import FILE_NAMES, build_task, generate_tasks
+from ewa_mcp.envs.geo import gazetteer
+from ewa_mcp.envs.geo.articles import country_title, write_articles
+from ewa_mcp.envs.geo.cities import CITIES
+from ewa_mcp.envs.geo.countries import COUNTRIES
+from ewa_mcp.envs.geo.taskgen.geolocation import FILE_NAMES, build_task, generate_tasks
 from ewa_mcp.geometry import haversine_km
-from ewa_mcp.geo.graph import build_graph
-from ewa_mcp.geo.languages import LANGUAGES, SHOP_KINDS
-from ewa_mcp.geo.locations import DIFFICULTIES, LOCATIONS_LIST
-from ewa_mcp.paths import REPO_ROOT
-from ewa_mcp.taskmodel import load_task_file
+from ewa_mcp.envs.geo.graph import build_graph
+from ewa_mcp.envs.geo.languages import LANGUAGES, SHOP_KINDS
+from ewa_mcp.envs.geo.locations import DIFFICULTIES, LOCATIONS_LIST
+from ewa_mcp.core.paths import REPO_ROOT
+from ewa_mcp.core.taskmodel import load_task_file
 
 INHABITED = {"Africa", "Asia", "Europe", "North America", "South America", "Oceania"}
 
@@ -74,7 +74,7 @@ def test_committed_task_files_are_current(tmp_path):
     committed = REPO_ROOT / "tasks" / "geolocation"
     for name in FILE_NAMES.values():
         assert filecmp.cmp(tmp_path / name, committed / name, shallow=False), (
-            f"tasks/geolocation/{name} is stale; run python -m ewa_mcp.geo.generate")
+            f"tasks/geolocation/{name} is stale; run python -m ewa_mcp.envs.geo.taskgen.geolocation")
     tasks = load_task_file(committed / FILE_NAMES["embodied"])
     assert tasks[0].start.web is not None and tasks[0].start.web.start_url == "wiki:/"
     baseline = load_task_file(committed / FILE_NAMES["baseline"])
@@ -112,4 +112,4 @@ def test_committed_articles_are_current(tmp_path):
     assert written == len(list(committed.glob("*.md")))
     for path in out.glob("*.md"):
         assert filecmp.cmp(path, committed / path.name, shallow=False), (
-            f"{path.name} is stale; run python -m ewa_mcp.geo.articles")
+            f"{path.name} is stale; run python -m ewa_mcp.envs.geo.articles")

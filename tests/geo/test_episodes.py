@@ -7,11 +7,11 @@ import json
 from typing import Any
 
 import pytest
-from ewa_mcp.graders.geo import grade_geolocation
+from ewa_mcp.envs.geo.checks import grade_geolocation
 from mcp import Client
 
-from ewa_mcp.environment import Environment, Observation
-from ewa_mcp.geo.generate import generate_tasks
+from ewa_mcp.core.environment import Environment, Observation
+from ewa_mcp.envs.geo.taskgen.geolocation import generate_tasks
 from ewa_mcp.server import ServerConfig, build_server
 
 pytestmark = pytest.mark.anyio

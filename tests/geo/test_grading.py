@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 
 import pytest
-from ewa_mcp.graders.geo import (
+from ewa_mcp.envs.geo.checks import (
     BANDS_KM,
     aggregate_geolocation,
     distance_bands,
@@ -16,8 +16,8 @@ from ewa_mcp.graders.geo import (
 )
 
 from ewa_mcp.geometry import destination, haversine_km
-from ewa_mcp.geo.names import countries_match, resolve_continent, resolve_country, street_core, streets_match
-from ewa_mcp.taskmodel import GeoAnswer
+from ewa_mcp.envs.geo.names import countries_match, resolve_continent, resolve_country, street_core, streets_match
+from ewa_mcp.core.taskmodel import GeoAnswer
 
 ABIDJAN = GeoAnswer(lat=5.3225, lng=-4.0185, continent="Africa", country="Ivory Coast", city="Abidjan",
                     street="Boulevard de la République")

@@ -14,17 +14,17 @@ import pytest
 from PIL import Image
 
 from ewa_mcp.street_drawing import fonts
-from ewa_mcp.geo.describe import describe_view
-from ewa_mcp.geo.generate import build_tasks
+from ewa_mcp.envs.geo.describe import describe_view
+from ewa_mcp.envs.geo.taskgen.geolocation import build_tasks
 from ewa_mcp.geometry import FOUR_DIRECTIONS
-from ewa_mcp.geo.hardness import is_hard
-from ewa_mcp.geo.languages import language
-from ewa_mcp.geo.styles import TREE_WORDS, VEHICLE_WORDS
-from ewa_mcp.geo.graph import build_graph
-from ewa_mcp.geo.locations import LOCATIONS, LOCATIONS_LIST
-from ewa_mcp.geo.view_images import render_png, render_view
-from ewa_mcp.geo.scene import compose_view
-from ewa_mcp.geo.seeding import rng_for
+from ewa_mcp.envs.geo.hardness import is_hard
+from ewa_mcp.envs.geo.languages import language
+from ewa_mcp.envs.geo.styles import TREE_WORDS, VEHICLE_WORDS
+from ewa_mcp.envs.geo.graph import build_graph
+from ewa_mcp.envs.geo.locations import LOCATIONS, LOCATIONS_LIST
+from ewa_mcp.envs.geo.view_images import render_png, render_view
+from ewa_mcp.envs.geo.scene import compose_view
+from ewa_mcp.envs.geo.seeding import rng_for
 
 STANDPOINTS = ("p0", "p1", "p2", "p3", "p4")
 QUOTED = re.compile(r"'[^']*'|\"[^\"]*\"")
@@ -53,8 +53,8 @@ def test_rendering_is_deterministic_and_views_differ():
 
 def test_scenes_are_identical_in_another_process_with_another_hash_seed():
     # Seeds come from sha256, never hash(): a view must not depend on PYTHONHASHSEED.
-    code = ("from ewa_mcp.geo.scene import compose_view; from ewa_mcp.geo.locations import LOCATIONS; "
-            "from ewa_mcp.geo.view_images import render_png; import hashlib; "
+    code = ("from ewa_mcp.envs.geo.scene import compose_view; from ewa_mcp.envs.geo.locations import LOCATIONS; "
+            "from ewa_mcp.envs.geo.view_images import render_png; import hashlib; "
             "s = compose_view(LOCATIONS['g044'], 'p2', 'west'); "
             "print(s.seed, hashlib.sha256(render_png(s)).hexdigest())")
     here = compose_view(LOCATIONS["g044"], "p2", "west")
@@ -159,7 +159,7 @@ def _transport_shown(spec, text) -> list[str]:
 
 
 def test_every_baseline_view_carries_what_its_difficulty_promises():
-    """docs/geolocation.md, "Difficulty": the one view a baseline task has (p0 north) carries
+    """ewa_mcp/envs/geo/README.md, "Difficulty": the one view a baseline task has (p0 north) carries
     the country cues always; the city cues for easy and street-level tasks (where the city has
     one the street can show); a landmark and the street sign for easy tasks; only shared city
     cues (buildings, trees, local transport) and never a deciding one for hard tasks."""
@@ -202,7 +202,7 @@ def test_every_baseline_view_carries_what_its_difficulty_promises():
 def test_hard_split_is_at_least_15_percent_and_no_single_cue_decides():
     from collections import Counter
 
-    from ewa_mcp.geo.hardness import shared_cues
+    from ewa_mcp.envs.geo.hardness import shared_cues
 
     tasks = build_tasks("baseline") + build_tasks("embodied")
     counts = Counter(t.difficulty for t in tasks)
@@ -244,7 +244,7 @@ DRAWN_FEATURES = {
 
 
 def test_every_feature_a_building_description_names_is_drawn():
-    from ewa_mcp.geo.styles import ARCH
+    from ewa_mcp.envs.geo.styles import ARCH
 
     for key, arch in ARCH.items():
         for pattern, drawn in DRAWN_FEATURES.items():
@@ -257,7 +257,7 @@ def test_every_feature_a_building_description_names_is_drawn():
 def test_drawn_features_change_the_picture(feature, composition):
     import dataclasses
 
-    from ewa_mcp.geo.styles import ARCH
+    from ewa_mcp.envs.geo.styles import ARCH
 
     owner = {"chimneys": "stone_terrace", "soot": "stone_terrace", "material": "british",
              "water_tanks": "middle_eastern", "fire_escapes": "na_downtown", "shutters": "mediterranean"}[feature]

@@ -25,11 +25,11 @@ from functools import lru_cache
 
 import pytest
 
-from ewa_mcp.geo.articles import country_title
-from ewa_mcp.geo.graph import build_graph
+from ewa_mcp.envs.geo.articles import country_title
+from ewa_mcp.envs.geo.graph import build_graph
 from ewa_mcp.geometry import FOUR_DIRECTIONS
-from ewa_mcp.geo.locations import LOCATIONS_LIST, Location
-from ewa_mcp.geo.scene import compose_view
+from ewa_mcp.envs.geo.locations import LOCATIONS_LIST, Location
+from ewa_mcp.envs.geo.scene import compose_view
 from ewa_mcp.websites.wiki import store
 from ewa_mcp.websites.wiki.search import SearchIndex, tokens_of
 
@@ -141,7 +141,7 @@ def test_leak_check_catches_an_article_that_quotes_a_view():
 def test_no_article_repeats_a_view_description_word_for_word():
     """A play-tester found each city's article quoting the sentence its views use for the buildings, so one
     search for that sentence named the city. Articles now summarise the architecture in words of their own."""
-    from ewa_mcp.geo.styles import ARCH
+    from ewa_mcp.envs.geo.styles import ARCH
 
     texts = [" ".join(a.body.split()) for a in store.load_articles()]
     for name, arch in ARCH.items():

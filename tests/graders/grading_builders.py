@@ -10,8 +10,8 @@ import itertools
 from pathlib import Path
 from typing import Any
 
-from ewa_mcp.records import EpisodeRecorder
-from ewa_mcp.taskmodel import Task
+from ewa_mcp.core.records import EpisodeRecorder
+from ewa_mcp.core.taskmodel import Task
 
 _ids = itertools.count(1)
 

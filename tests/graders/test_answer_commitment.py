@@ -15,7 +15,7 @@ import pytest
 
 from ewa_mcp.graders import grade_episode
 from ewa_mcp.graders.answers import check_text_answer
-from ewa_mcp.taskmodel import AnswerNumbers, TextAnswer
+from ewa_mcp.core.taskmodel import AnswerNumbers, TextAnswer
 from ewa_mcp.websites.shop import catalog
 
 from grading_builders import EpisodeBuilder

@@ -312,7 +312,7 @@ GEO_TASK = {"answer": {"kind": "geolocation", "lat": 48.8584, "lng": 2.2945, "co
 
 def test_geolocation_without_geo_grader_is_reported_not_gradable(tmp_path: Path,
                                                                  monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setitem(sys.modules, "ewa_mcp.graders.geo", None)  # behave as if graders/geo.py did not exist
+    monkeypatch.setitem(sys.modules, "ewa_mcp.envs.geo.checks", None)  # behave as if ewa_mcp/envs/geo/checks.py did not exist
     ep = EpisodeBuilder(tmp_path, make_task("geo-1", "geolocation", **GEO_TASK))
     result = grade_episode(ep.finish(submission={"lat": 48.85, "lng": 2.29, "city": "Paris"}).directory)
     assert result.gradable is False and result.answer_correct is None
@@ -329,7 +329,7 @@ def test_geolocation_is_delegated_to_the_geo_grader(tmp_path: Path, monkeypatch:
         return {"continent": True, "country": True, "city": city, "street": False, "all_levels": False,
                 "distance_km": 0.5, "bands": {"street": True}, "score": 4990}
 
-    monkeypatch.setitem(sys.modules, "ewa_mcp.graders.geo",
+    monkeypatch.setitem(sys.modules, "ewa_mcp.envs.geo.checks",
                         types.SimpleNamespace(grade_geolocation=grade_geolocation))
     ep = EpisodeBuilder(tmp_path, make_task("geo-1", "geolocation", **GEO_TASK))
     result = grade_episode(ep.finish(submission={"lat": 48.85, "lng": 2.29, "city": "Paris"}).directory)
@@ -355,7 +355,7 @@ def test_geolocation_aggregates_and_table_come_from_the_geo_grader(tmp_path: Pat
     def render_geolocation_table(agg_by_run: dict[str, Any]) -> str:
         return "GEO TABLE " + ", ".join(f"{label}: n={agg['n']}" for label, agg in agg_by_run.items())
 
-    monkeypatch.setitem(sys.modules, "ewa_mcp.graders.geo", types.SimpleNamespace(
+    monkeypatch.setitem(sys.modules, "ewa_mcp.envs.geo.checks", types.SimpleNamespace(
         grade_geolocation=grade_geolocation, aggregate_geolocation=aggregate_geolocation,
         render_geolocation_table=render_geolocation_table))
     run = tmp_path / "geo-run"

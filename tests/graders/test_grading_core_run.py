@@ -12,7 +12,7 @@ from typing import Any
 import pytest
 from mcp import Client
 
-from ewa_mcp.environment import Environment, Observation
+from ewa_mcp.core.environment import Environment, Observation
 from ewa_mcp.graders import grade_run
 from ewa_mcp.server import ServerConfig, build_server
 

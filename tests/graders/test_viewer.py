@@ -18,11 +18,11 @@ from mcp import Client
 from mcp.server.mcpserver import MCPServer
 from PIL import Image
 
-from ewa_mcp.environment import EnvError, Environment, Observation
+from ewa_mcp.core.environment import EnvError, Environment, Observation
 from ewa_mcp.graders import RunReport, grade_run
 from ewa_mcp.graders.cli import main
 from ewa_mcp.graders.viewer import MAX_IMAGE_SIDE, PAGE_IMAGE_BUDGET_BYTES, render_html, write_html
-from ewa_mcp.response import env_action
+from ewa_mcp.core.response import env_action
 from ewa_mcp.server import ServerConfig, build_server
 
 CHROMIUM = Path("/usr/bin/chromium")

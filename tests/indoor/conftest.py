@@ -1,7 +1,7 @@
 import pytest
 
-from ewa_mcp.indoor.session import KitchenSession
-from ewa_mcp.indoor.sim import KitchenSim
+from ewa_mcp.envs.kitchen.session import KitchenSession
+from ewa_mcp.envs.kitchen.sim import KitchenSim
 
 
 @pytest.fixture

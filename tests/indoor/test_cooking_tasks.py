@@ -10,11 +10,11 @@ from pathlib import Path
 
 import pytest
 
-from ewa_mcp.indoor.planner import scene_inventory
-from ewa_mcp.paths import tasks_dir
-from ewa_mcp.taskgen.cooking import KITCHEN_SCOPE, kitchen_equipment, singles_out
-from ewa_mcp.taskgen.recipe_goals import PIECE_SOURCE, goals_from_ops, recipe_ops
-from ewa_mcp.taskmodel import TaskStore
+from ewa_mcp.envs.kitchen.planner import scene_inventory
+from ewa_mcp.core.paths import tasks_dir
+from ewa_mcp.envs.kitchen.taskgen.cooking import KITCHEN_SCOPE, kitchen_equipment, singles_out
+from ewa_mcp.envs.kitchen.taskgen.recipe_goals import PIECE_SOURCE, goals_from_ops, recipe_ops
+from ewa_mcp.core.taskmodel import TaskStore
 from ewa_mcp.websites.recipes.build_recipes import products_in
 from ewa_mcp.websites.recipes.catalog import load_catalog
 from ewa_mcp.websites.recipes.vocabulary import KITCHEN_PRODUCTS
@@ -35,9 +35,9 @@ def tasks():
 
 
 def test_every_step_of_every_cooking_task_is_doable_or_marked(tasks):
-    from ewa_mcp.indoor.actions import TABLE
+    from ewa_mcp.envs.kitchen.actions import TABLE
 
-    tools = {action.tool_name for action in TABLE.tools()}  # ewa_mcp/tools/kitchen.py makes one tool per entry
+    tools = {action.tool_name for action in TABLE.tools()}  # ewa_mcp/envs/kitchen/tools.py makes one tool per entry
     for tool in set(KITCHEN_TOOL_FOR_OP.values()):
         assert tool in tools
     for task in tasks:

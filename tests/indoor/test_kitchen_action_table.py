@@ -1,13 +1,13 @@
-"""The kitchen action table (ewa_mcp/indoor/actions.py) is consistent and is what the parser and the
+"""The kitchen action table (ewa_mcp/envs/kitchen/actions.py) is consistent and is what the parser and the
 session read."""
 
 from __future__ import annotations
 
 import pytest
 
-from ewa_mcp.indoor.actions import ACTIONS, TABLE, KitchenAction, KitchenActionTable, ObjectRef
-from ewa_mcp.indoor.commands import parse_command
-from ewa_mcp.indoor.session import KitchenActionError
+from ewa_mcp.envs.kitchen.actions import ACTIONS, TABLE, KitchenAction, KitchenActionTable, ObjectRef
+from ewa_mcp.envs.kitchen.commands import parse_command
+from ewa_mcp.envs.kitchen.session import KitchenActionError
 
 from .conftest import new_session
 

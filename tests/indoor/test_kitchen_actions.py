@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from ewa_mcp.indoor.session import KitchenActionError, KitchenSession
-from ewa_mcp.indoor.sim import KitchenSim
-from ewa_mcp.indoor.vocabulary import PIECE_COUNT
+from ewa_mcp.envs.kitchen.session import KitchenActionError, KitchenSession
+from ewa_mcp.envs.kitchen.sim import KitchenSim
+from ewa_mcp.envs.kitchen.vocabulary import PIECE_COUNT
 
 from .conftest import new_session
 

@@ -17,12 +17,12 @@ pytest.importorskip("ai2thor")
 from ai2thor.controller import Controller  # noqa: E402
 from mcp import Client  # noqa: E402
 
-from ewa_mcp.indoor.ai2thor_backend import Ai2ThorController  # noqa: E402
-from ewa_mcp.indoor.env import KitchenEnvironment  # noqa: E402
-from ewa_mcp.indoor.planner import plan_ops  # noqa: E402
-from ewa_mcp.indoor.session import KitchenSession  # noqa: E402
-from ewa_mcp.indoor.sim import KitchenSim  # noqa: E402
-from ewa_mcp.indoor.standin import standin_command  # noqa: E402
+from ewa_mcp.envs.kitchen.ai2thor_backend import Ai2ThorController  # noqa: E402
+from ewa_mcp.envs.kitchen.env import KitchenEnvironment  # noqa: E402
+from ewa_mcp.envs.kitchen.planner import plan_ops  # noqa: E402
+from ewa_mcp.envs.kitchen.session import KitchenSession  # noqa: E402
+from ewa_mcp.envs.kitchen.sim import KitchenSim  # noqa: E402
+from ewa_mcp.envs.kitchen.standin import standin_command  # noqa: E402
 from ewa_mcp.server import ServerConfig, build_server  # noqa: E402
 
 from .test_kitchen_mcp import StubWeb, task  # noqa: E402

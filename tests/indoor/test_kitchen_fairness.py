@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import pytest
 
-from ewa_mcp.indoor.observe import build_observation
-from ewa_mcp.indoor.session import KitchenActionError
+from ewa_mcp.envs.kitchen.observe import build_observation
+from ewa_mcp.envs.kitchen.session import KitchenActionError
 
 from .conftest import new_session
 
@@ -77,7 +77,7 @@ def test_everything_the_observation_shows_in_reach_can_be_acted_on(scene):
 @pytest.mark.parametrize(("scene", "anchor"), [("FloorPlan1", "Knife"), ("FloorPlan13", "Fridge"),
                                                ("FloorPlan22", "Sink"), ("FloorPlan7", "Toaster")])
 def test_the_picture_labels_what_is_visible_without_overlaps(scene, anchor):
-    from ewa_mcp.indoor.kitchen_map import render_topdown
+    from ewa_mcp.envs.kitchen.kitchen_map import render_topdown
 
     s = new_session(scene)
     s.teleport(anchor)

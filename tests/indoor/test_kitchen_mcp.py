@@ -9,9 +9,9 @@ from typing import Any
 import pytest
 from mcp import Client
 
-from ewa_mcp.environment import Environment, Observation
-from ewa_mcp.indoor.env import KitchenEnvironment
-from ewa_mcp.indoor.planner import plan_ops
+from ewa_mcp.core.environment import Environment, Observation
+from ewa_mcp.envs.kitchen.env import KitchenEnvironment
+from ewa_mcp.envs.kitchen.planner import plan_ops
 from ewa_mcp.server import ServerConfig, build_server
 from ewa_mcp.settings import SettingsError
 

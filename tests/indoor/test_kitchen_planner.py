@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from ewa_mcp.indoor.planner import PlanError, check_recipe_executable, plan_ops, scene_inventory
-from ewa_mcp.indoor.session import KitchenSession
+from ewa_mcp.envs.kitchen.planner import PlanError, check_recipe_executable, plan_ops, scene_inventory
+from ewa_mcp.envs.kitchen.session import KitchenSession
 
 from .conftest import new_session
 

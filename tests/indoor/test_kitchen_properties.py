@@ -7,9 +7,9 @@ from collections import Counter
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from ewa_mcp.indoor.session import KitchenActionError, KitchenSession
-from ewa_mcp.indoor.sim import KitchenSim
-from ewa_mcp.indoor.vocabulary import PIECE_COUNT
+from ewa_mcp.envs.kitchen.session import KitchenActionError, KitchenSession
+from ewa_mcp.envs.kitchen.sim import KitchenSim
+from ewa_mcp.envs.kitchen.vocabulary import PIECE_COUNT
 
 from .conftest import new_session
 

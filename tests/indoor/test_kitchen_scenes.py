@@ -6,10 +6,10 @@ from collections import Counter
 
 import pytest
 
-from ewa_mcp.indoor.planner import scene_inventory
-from ewa_mcp.indoor.scenes import SCENE_NAMES, SceneError, _generate, build_scene, scene_number
-from ewa_mcp.indoor.sim import KitchenSim, format_object_id
-from ewa_mcp.indoor.vocabulary import FOOD_TYPES
+from ewa_mcp.envs.kitchen.planner import scene_inventory
+from ewa_mcp.envs.kitchen.scenes import SCENE_NAMES, SceneError, _generate, build_scene, scene_number
+from ewa_mcp.envs.kitchen.sim import KitchenSim, format_object_id
+from ewa_mcp.envs.kitchen.vocabulary import FOOD_TYPES
 
 from .conftest import new_session
 

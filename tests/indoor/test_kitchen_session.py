@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from ewa_mcp.indoor.commands import CommandError, parse_command
-from ewa_mcp.indoor.observe import build_observation
-from ewa_mcp.indoor.session import KitchenActionError
+from ewa_mcp.envs.kitchen.commands import CommandError, parse_command
+from ewa_mcp.envs.kitchen.observe import build_observation
+from ewa_mcp.envs.kitchen.session import KitchenActionError
 
 from .conftest import new_session
 
@@ -225,7 +225,7 @@ def test_final_state_contract():
 def test_a_missing_type_is_called_buyable_only_when_the_shop_sells_it():
     """The shop sells food only: a missing Pan is not 'bought on the shopping site'; the error names what to
     use instead when the kitchen has it, and says plainly that the shop does not sell it otherwise."""
-    from ewa_mcp.indoor.vocabulary import SHOP_SOLD_TYPES
+    from ewa_mcp.envs.kitchen.vocabulary import SHOP_SOLD_TYPES
     from ewa_mcp.websites.shop.catalog import load_products
 
     assert SHOP_SOLD_TYPES == {p.kitchen_type for p in load_products() if p.kitchen_type}

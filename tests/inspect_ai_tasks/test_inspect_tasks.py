@@ -19,8 +19,8 @@ from inspect_ai import eval as inspect_eval  # noqa: E402
 from inspect_ai.model import ModelOutput, get_model  # noqa: E402
 
 from ewa_mcp import inspect_tasks  # noqa: E402
-from ewa_mcp.paths import tasks_dir  # noqa: E402
-from ewa_mcp.taskmodel import TaskStore  # noqa: E402
+from ewa_mcp.core.paths import tasks_dir  # noqa: E402
+from ewa_mcp.core.taskmodel import TaskStore  # noqa: E402
 
 
 

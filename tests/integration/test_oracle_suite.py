@@ -13,8 +13,8 @@ import pytest
 from ewa_mcp.evaluation.agents import NoopAgent, OracleAgent, RandomAgent
 from ewa_mcp.evaluation.runner import run_eval, select_tasks
 from ewa_mcp.graders import grade_run
-from ewa_mcp.paths import tasks_dir
-from ewa_mcp.taskmodel import TaskStore
+from ewa_mcp.core.paths import tasks_dir
+from ewa_mcp.core.taskmodel import TaskStore
 
 DOMAINS = ["cooking", "navigation", "shopping", "traveling", "geolocation"]
 needs_browser = pytest.mark.skipif(

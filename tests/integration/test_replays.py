@@ -10,7 +10,7 @@ import sys
 import pytest
 
 from ewa_mcp.graders import grade_run
-from ewa_mcp.paths import REPO_ROOT
+from ewa_mcp.core.paths import REPO_ROOT
 
 REPLAYS = REPO_ROOT / "examples" / "replays"
 EXPECTED = json.loads((REPLAYS / "expected.json").read_text())

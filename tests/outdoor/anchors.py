@@ -1,5 +1,5 @@
 """Known positions used to check the generated graphs. None of these is a generator fit or
-calibration point (see ewa_mcp/outdoor/specs/*.py FIT_POINTS and CALIBRATION); each is a published
+calibration point (see ewa_mcp/envs/street/specs/*.py FIT_POINTS and CALIBRATION); each is a published
 coordinate of a station or square that stands on the named intersection."""
 
 # (city, "street & street", lat, lng, source)

@@ -8,6 +8,6 @@ def anyio_backend():
 
 @pytest.fixture(scope="session")
 def world():
-    from ewa_mcp.outdoor.world import get_world
+    from ewa_mcp.envs.street.world import get_world
 
     return get_world()

@@ -5,11 +5,11 @@ import re
 
 import pytest
 
-from ewa_mcp.environment import EnvError
-from ewa_mcp.outdoor.env import StreetEnvironment
+from ewa_mcp.core.environment import EnvError
+from ewa_mcp.envs.street.env import StreetEnvironment
 from ewa_mcp.geometry import angle_diff
-from ewa_mcp.services import Services
-from ewa_mcp.taskmodel import Task
+from ewa_mcp.core.services import Services
+from ewa_mcp.core.taskmodel import Task
 
 
 def make_task(world, start_query="5th Ave & W 23rd St", heading=29.0, goal="store-target-herald-square"):
@@ -198,7 +198,7 @@ async def test_stop_ends_the_walk_and_says_so(world):
 async def test_two_places_at_one_node_read_as_two_sentences(world):
     # A play-tester read "Right here: on your right, a … tower … . on your right, a rugged church …" at
     # Boylston & Clarendon, where two landmarks share a node: each place now gets its own line.
-    from ewa_mcp.outdoor.scene import places_here
+    from ewa_mcp.envs.street.scene import places_here
 
     graph = world.city("boston")
     node = next(n for n in graph.ids if len(places_here(world, graph, graph.index[n], 0.0)) >= 2)

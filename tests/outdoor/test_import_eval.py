@@ -11,8 +11,9 @@ import pytest
 from ewa_mcp.evaluation.agents import NoopAgent, OracleAgent
 from ewa_mcp.evaluation.runner import run_eval
 from ewa_mcp.graders import grade_run
-from ewa_mcp.outdoor import release, world as world_module
-from ewa_mcp.taskmodel import TaskStore
+from ewa_mcp.envs.street import world as world_module
+from ewa_mcp.envs.street.taskgen import release
+from ewa_mcp.core.taskmodel import TaskStore
 
 from . import release_fixtures as fx
 

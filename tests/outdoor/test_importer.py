@@ -8,10 +8,10 @@ import json
 import pytest
 
 from ewa_mcp.cli import main as cli_main
-from ewa_mcp.outdoor import release
-from ewa_mcp.outdoor.importer import ImportFormatError
-from ewa_mcp.outdoor.world import World
-from ewa_mcp.taskmodel import Task
+from ewa_mcp.envs.street.taskgen import release
+from ewa_mcp.envs.street.importer import ImportFormatError
+from ewa_mcp.envs.street.world import World
+from ewa_mcp.core.taskmodel import Task
 from ewa_mcp.websites.map.places import WorldAdapter
 
 from . import release_fixtures as fx

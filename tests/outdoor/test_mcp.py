@@ -5,14 +5,14 @@ import json
 import pytest
 from mcp import Client
 
-from ewa_mcp import registry
+from ewa_mcp.core import registry
 from ewa_mcp.server import ServerConfig, build_server
 
 
 @pytest.fixture
 def street_only(monkeypatch):
     # Only the groups this part needs, so the test does not depend on the browser/kitchen parts.
-    monkeypatch.setattr(registry, "tool_groups", lambda: ["ewa_mcp.tools.core", "ewa_mcp.tools.street"])
+    monkeypatch.setattr(registry, "tool_groups", lambda: ["ewa_mcp.core.lifecycle", "ewa_mcp.envs.street.tools"])
 
 
 def write_task(tmp_path, world):
@@ -80,7 +80,7 @@ async def test_walk_to_a_store_over_mcp(tmp_path, world, street_only):
 def test_the_move_tool_offers_exactly_the_environments_labels():
     from typing import get_args
 
-    from ewa_mcp.outdoor import env
-    from ewa_mcp.tools import street
+    from ewa_mcp.envs.street import env
+    from ewa_mcp.envs.street import actions as street
 
     assert get_args(street.Direction) == get_args(env.Direction)

@@ -1,10 +1,10 @@
 """A task names a place by its address or corner; the walk is graded at the place's node. Every label
 must point at that node (play-test: "Boston Common (Tremont St & Park St)" was graded 270 m away)."""
 
-from ewa_mcp.outdoor.address import parse_address
+from ewa_mcp.envs.street.address import parse_address
 from ewa_mcp.geometry import haversine_m
-from ewa_mcp.outdoor.address import fold
-from ewa_mcp.outdoor.anchoring import ANCHOR_RADIUS_M, label_fits
+from ewa_mcp.envs.street.address import fold
+from ewa_mcp.envs.street.anchoring import ANCHOR_RADIUS_M, label_fits
 from ewa_mcp.websites.map.places import WorldAdapter
 
 

@@ -1,6 +1,6 @@
 """View words agree with the map's directions (play-test findings)."""
 
-from ewa_mcp.outdoor.scene import compute_scene, describe
+from ewa_mcp.envs.street.scene import compute_scene, describe
 
 
 def _node_on(graph, *streets):

@@ -7,9 +7,9 @@ import json
 import networkx as nx
 import pytest
 
-from ewa_mcp.outdoor import generate
+from ewa_mcp.envs.street import graphgen as generate
 from ewa_mcp.geometry import angle_diff, haversine_m
-from ewa_mcp.outdoor.world import World, WorldError
+from ewa_mcp.envs.street.world import World, WorldError
 
 from .anchors import ANCHOR_TOLERANCE_M, INTERSECTION_ANCHORS
 
@@ -161,11 +161,11 @@ def test_directions_reject_bad_input(world):
 
 def test_committed_data_is_what_the_generator_makes():
     for city in ("boston", "pittsburgh", "philadelphia", "manhattan"):
-        spec = importlib.import_module(f"ewa_mcp.outdoor.specs.{city}").build()
+        spec = importlib.import_module(f"ewa_mcp.envs.street.specs.{city}").build()
         graph = generate.build_graph(spec)
         graph["pois"] = generate.attach_pois(graph, generate.load_pois())
         committed = json.loads(gzip.open(generate.DATA_DIR / f"{city}.json.gz").read())
-        assert graph == committed, f"{city}: data/{city}.json.gz is stale; run python -m ewa_mcp.outdoor.generate"
+        assert graph == committed, f"{city}: data/{city}.json.gz is stale; run python -m ewa_mcp.envs.street.graphgen"
 
 
 def test_extra_graph_directories_load_and_unknown_format_is_refused(tmp_path):

@@ -11,9 +11,9 @@ from typing import Any
 
 import pytest
 
-from ewa_mcp.services import Services
+from ewa_mcp.core.services import Services
 from ewa_mcp.settings import load_settings
-from ewa_mcp.web.chromium import ChromiumNotFoundError, chromium_service, find_chromium
+from ewa_mcp.envs.browser.chromium import ChromiumNotFoundError, chromium_service, find_chromium
 
 
 @pytest.fixture(scope="module")

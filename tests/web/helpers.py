@@ -7,8 +7,8 @@ import contextlib
 from types import SimpleNamespace
 from typing import Any
 
-from ewa_mcp.services import Services
-from ewa_mcp.taskmodel import Task
+from ewa_mcp.core.services import Services
+from ewa_mcp.core.taskmodel import Task
 
 
 def web_task(start_url: str = "fixture:/", task_id: str = "web-test") -> Task:
@@ -21,7 +21,7 @@ def web_task(start_url: str = "fixture:/", task_id: str = "web-test") -> Task:
 async def open_env(services: Services, start_url: str = "fixture:/", episode_id: str = "ep-test",
                    options: dict[str, Any] | None = None) -> Any:
     """A BrowserEnvironment of a stand-in episode (the environment reads only its id)."""
-    from ewa_mcp.web.env import BrowserEnvironment
+    from ewa_mcp.envs.browser.env import BrowserEnvironment
 
     env = BrowserEnvironment(SimpleNamespace(id=episode_id, options=options or {}), services)
     await env.reset(web_task(start_url), options or {})

@@ -9,8 +9,8 @@ import threading
 import pytest
 from PIL import Image
 
-from ewa_mcp.environment import EnvError
-from ewa_mcp.web.som import colour_of
+from ewa_mcp.core.environment import EnvError
+from ewa_mcp.envs.browser.som import colour_of
 
 from .helpers import element_id, open_env
 

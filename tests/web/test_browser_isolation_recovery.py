@@ -9,7 +9,7 @@ import signal
 
 import pytest
 
-from ewa_mcp.environment import EnvError
+from ewa_mcp.core.environment import EnvError
 
 from .helpers import crash_tab, element_id, open_env
 

@@ -1,4 +1,4 @@
-"""Memory upkeep of open episodes: garbage collection in quiet renderers (ewa_mcp/web/idlegc.py)."""
+"""Memory upkeep of open episodes: garbage collection in quiet renderers (ewa_mcp/envs/browser/idlegc.py)."""
 
 from __future__ import annotations
 
@@ -7,8 +7,8 @@ import asyncio
 import pytest
 from pydantic import ValidationError
 
-from ewa_mcp.web.config import BrowserConfig
-from ewa_mcp.web.idlegc import IdleCollector
+from ewa_mcp.settings import BrowserConfig
+from ewa_mcp.envs.browser.idlegc import IdleCollector
 
 from .helpers import crash_tab, open_env
 

@@ -1,4 +1,4 @@
-"""Warm contexts handed from one episode to the next (ewa_mcp/web/pool.py): reused, and scrubbed."""
+"""Warm contexts handed from one episode to the next (ewa_mcp/envs/browser/pool.py): reused, and scrubbed."""
 
 from __future__ import annotations
 
@@ -8,8 +8,8 @@ from types import SimpleNamespace
 
 import pytest
 
-from ewa_mcp.environment import EnvError
-from ewa_mcp.web.pool import IDLE_S, KEEP_IDLE, ContextPool, WarmContext
+from ewa_mcp.core.environment import EnvError
+from ewa_mcp.envs.browser.pool import IDLE_S, KEEP_IDLE, ContextPool, WarmContext
 
 from .helpers import crash_tab, open_env
 

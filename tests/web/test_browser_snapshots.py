@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 from playwright.async_api import Page
 
-from ewa_mcp.environment import EnvError
+from ewa_mcp.core.environment import EnvError
 
 from .helpers import element_id, open_env
 

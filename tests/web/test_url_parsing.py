@@ -7,9 +7,9 @@ from urllib.parse import urlsplit
 
 import pytest
 
-from ewa_mcp.environment import EnvError
-from ewa_mcp.web.chromium import chromium_service
-from ewa_mcp.web.safety import BlockedUrlError, UrlPolicy, parse_url
+from ewa_mcp.core.environment import EnvError
+from ewa_mcp.envs.browser.chromium import chromium_service
+from ewa_mcp.envs.browser.safety import BlockedUrlError, UrlPolicy, parse_url
 
 from .helpers import open_env
 

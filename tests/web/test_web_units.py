@@ -8,12 +8,12 @@ import stat
 import pytest
 
 from ewa_mcp.settings import load_settings
-from ewa_mcp.web import chromium
-from ewa_mcp.web.aria import parse_snapshot
-from ewa_mcp.web.elements import (ElementRefError, ElementRegistry, IdRef, RoleNameRef, parse_element,
+from ewa_mcp.envs.browser import chromium
+from ewa_mcp.envs.browser.aria import parse_snapshot
+from ewa_mcp.envs.browser.elements import (ElementRefError, ElementRegistry, IdRef, RoleNameRef, parse_element,
                                   resolve_role_name)
-from ewa_mcp.web.tree_text import render_tree
-from ewa_mcp.web.safety import BlockedUrlError, UrlPolicy, normalize_origin
+from ewa_mcp.envs.browser.tree_text import render_tree
+from ewa_mcp.envs.browser.safety import BlockedUrlError, UrlPolicy, normalize_origin
 
 SNAPSHOT = """\
 - generic [active] [ref=e1] [box=8,8,1264,2193]:

@@ -10,7 +10,7 @@ import pytest
 from markupsafe import escape
 from starlette.testclient import TestClient
 
-from ewa_mcp.outdoor.world import get_world
+from ewa_mcp.envs.street.world import get_world
 from ewa_mcp.websites.common import SiteContext
 from ewa_mcp.websites.map.app import create_app
 
@@ -124,7 +124,7 @@ def test_an_intersection_node_has_a_place_page(client, world):
 
 
 def landmarks_with_street_addresses(world):
-    from ewa_mcp.outdoor.address import parse_address
+    from ewa_mcp.envs.street.address import parse_address
 
     return sorted((p for p in world.places.values() if parse_address(p.address) and p.description_hint
                    and p.name.lower() not in p.address.lower()  # "Elfreth's Alley" is named by its address
@@ -241,7 +241,7 @@ def test_events_carry_the_episode(sink, world):
 
 
 def test_directions_via_a_waypoint_pass_it_and_record_both_legs(client, sink, world):
-    from ewa_mcp.outdoor.world import directions_via
+    from ewa_mcp.envs.street.world import directions_via
 
     esb = "poi-manhattan-empire-state-building"
     html = client.get("/directions", params={"from": FLATIRON, "via": "Empire State Building", "to": TARGET}).text

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from ewa_mcp.outdoor.world import get_world
+from ewa_mcp.envs.street.world import get_world
 
 pytestmark = pytest.mark.browser
 

@@ -6,10 +6,8 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-import pytest
 
-planner = pytest.importorskip("ewa_mcp.indoor.planner", reason="the kitchen planner (ewa_mcp.indoor.planner) "
-                              "is not in this build yet")
+from ewa_mcp.envs.kitchen import planner
 
 DATA = json.loads((Path(__file__).resolve().parents[2] / "websites" / "recipes" / "data" / "recipes.json")
                   .read_text(encoding="utf-8"))

@@ -1,6 +1,6 @@
 """The map site's view of the outdoor world: resolve free text to a place, route, and draw streets.
 
-``ewa_mcp.outdoor.world`` owns the street graphs, places and routing; this module only adapts
+``ewa_mcp.envs.street.world`` owns the street graphs, places and routing; this module only adapts
 them for pages (an origin typed as text, a node id or a place id all become one ``Place``) and
 caches the per-city street segments the SVG map draws.
 """
@@ -20,13 +20,13 @@ STRUCTURED_KINDS = {"address", "intersection"}
 
 @dataclass
 class Resolution:
-    place: Any = None  # ewa_mcp.outdoor.world.Place
+    place: Any = None  # ewa_mcp.envs.street.world.Place
     choices: list[Any] = field(default_factory=list)  # several plausible places: the user picks
     error: str = ""
 
 
 def _load_world() -> Any:
-    from ewa_mcp.outdoor.world import get_world  # imported late: the street graphs load on first use
+    from ewa_mcp.envs.street.world import get_world  # imported late: the street graphs load on first use
 
     return get_world()
 
@@ -84,7 +84,7 @@ class WorldAdapter:
     # ------------------------------------------------------------ routing and drawing
     def directions(self, origin: Any, destination: Any, via: Any = None) -> Any:
         if via is not None:
-            from ewa_mcp.outdoor.world import directions_via
+            from ewa_mcp.envs.street.world import directions_via
 
             return directions_via(self.world, origin.id, via.id, destination.id)
         return self.world.directions(origin.id, destination.id)

@@ -21,13 +21,13 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
-from ewa_mcp.paths import PACKAGE_DIR
+from ewa_mcp.core.paths import PACKAGE_DIR
 
 DATA_DIR = Path(__file__).resolve().parent / "data"
 PRODUCTS_PATH = DATA_DIR / "products.json"
 STORES_PATH = DATA_DIR / "stores.json"
 # The outdoor world's points of interest (owned by the outdoor package; may not exist in every build).
-POIS_PATH = PACKAGE_DIR / "outdoor" / "data" / "pois.json"
+POIS_PATH = PACKAGE_DIR / "envs" / "street" / "data" / "pois.json"
 
 
 class CatalogError(LookupError):

@@ -1,4 +1,4 @@
-"""Landmark articles <-> the outdoor POI file (ewa_mcp/outdoor/data/pois.json).
+"""Landmark articles <-> the outdoor POI file (ewa_mcp/envs/street/data/pois.json).
 
 Traveling tasks ask questions answered by POI facts and graders check answers against those
 facts, so a landmark article's infobox must show each fact exactly as the POI file has it. The
@@ -19,7 +19,7 @@ from typing import Any
 
 from .store import ARTICLES_DIR, ArticleIndex, index
 
-POIS_FILE = Path(__file__).resolve().parents[2] / "ewa_mcp" / "outdoor" / "data" / "pois.json"
+POIS_FILE = Path(__file__).resolve().parents[2] / "ewa_mcp" / "envs" / "street" / "data" / "pois.json"
 # Kinds a visitor would look up in an encyclopedia; shops, stores and restaurants are not.
 LANDMARK_KINDS = frozenset({"landmark", "museum", "park", "church", "theater", "library", "market", "station",
                             "hotel"})
@@ -52,7 +52,7 @@ def _poi_path() -> Path:
     try:  # the installed package layout first, the repository layout as fallback
         import ewa_mcp
 
-        candidate = Path(ewa_mcp.__file__).resolve().parent / "outdoor" / "data" / "pois.json"
+        candidate = Path(ewa_mcp.__file__).resolve().parent / "envs" / "street" / "data" / "pois.json"
         if candidate.exists():
             return candidate
     except ImportError:

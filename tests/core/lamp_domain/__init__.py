@@ -1,14 +1,14 @@
-"""A tiny extra domain, "lighting", declared in its own package as docs/extending.md describes ("Add a domain"):
-an embodied environment (a lamp), one tool (lamp_switch), a task generator and a grader check for its goal kind
-(lamp_lit). tests/core/test_extending.py registers it, generates its tasks, plays and grades episodes.
+"""A tiny world, "lamp", with one domain, "lighting", laid out as every world under ewa_mcp/envs/ is
+(docs/extending.md, "Add a world"): an embodied environment (a lamp), an action table with one tool
+(lamp_switch), a task generator and the grader's check of its goal kind (lamp_lit).
 
-In a real plugin the registration is one line in ewa_mcp/registry.py: ``DOMAIN_PACKAGES.append(
-"<package>:DOMAIN")``; the test calls ``registry.register_domain(DOMAIN)`` for its own process instead.
+tests/core/test_extending.py registers it for its own process (``registry.register_domain``) and plays and grades
+episodes; tests/core/test_new_world.py writes these same files into a copy of ewa_mcp/envs/ as a built-in world.
 """
 
 from __future__ import annotations
 
-from ewa_mcp.registry import Domain, EnvironmentSpec
+from ewa_mcp.core.registry import Domain, EnvironmentSpec
 
 LAMP = EnvironmentSpec(name="lamp", side="embodied", cls=f"{__name__}.env:LampEnvironment", tools=f"{__name__}.tools",
                        tool_hint="lamp_switch")
@@ -16,8 +16,9 @@ LAMP = EnvironmentSpec(name="lamp", side="embodied", cls=f"{__name__}.env:LampEn
 DOMAIN = Domain(
     name="lighting",
     environments=(LAMP,),
-    generator=f"{__name__}.generate:generate",
+    generator=f"{__name__}.taskgen.lighting:generate",
     goal_kinds=("lamp_lit",),
     checks={"lamp_lit": f"{__name__}.checks:check_lamp_lit"},
     difficulties=("easy",),
 )
+DOMAINS = [DOMAIN]

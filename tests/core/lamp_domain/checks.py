@@ -4,12 +4,14 @@ from __future__ import annotations
 
 from typing import Any
 
-from ewa_mcp.graders.models import ConditionResult
+from ewa_mcp.graders.models import CheckContext, ConditionResult
 
 
-def check_lamp_lit(goal: Any, state: dict[str, Any]) -> ConditionResult:
+def check_lamp_lit(goal: Any, ctx: CheckContext) -> ConditionResult:
+    if ctx.state is None:
+        return ctx.unknown("embodied", goal, ctx.why_no_state)
     want = bool(getattr(goal, "lit", True))
-    lit = state.get("lit")
+    lit = ctx.state.get("lit")
     if not isinstance(lit, bool):
         return ConditionResult(side="embodied", kind="lamp_lit", description="lamp state", met=None,
                                note="the lamp's final state has no 'lit' flag")

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from ewa_mcp.environment import EnvError, Environment, Observation
+from ewa_mcp.core.environment import EnvError, Environment, Observation
 
 
 class LampEnvironment(Environment):

@@ -1,16 +1,14 @@
-"""The lamp's one tool. Its name starts with the environment's registry name, so a lamp tool called on
-another domain's episode is refused before it runs."""
+"""The lamp's tools, from its action table. Their names start with the environment's registry name, so a lamp tool
+called on another domain's episode is refused before it runs."""
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Any
 
-from ewa_mcp.response import env_action
-from ewa_mcp.tools.adapter import define_tool
+from ewa_mcp.core.tool_table import register_actions
+
+from .actions import ACTIONS
 
 
-def register(mcp, episodes) -> None:
-    @define_tool(mcp, title="Switch the lamp", effect="act", description="Switch the lamp on or off.")
-    async def lamp_switch(episode_id: str, state: Literal["on", "off"]):
-        return await env_action(episodes, episode_id, "lamp_switch", {"state": state}, "embodied",
-                                lambda env: env.switch(state == "on"))
+def register(mcp: Any, episodes: Any) -> None:
+    register_actions(mcp, episodes, ACTIONS)

@@ -1,0 +1,78 @@
+"""The one response builder: every tool answers with a short text the model reads, the same
+content as structured data (matching the tool's output schema), and optional PNG images."""
+
+from __future__ import annotations
+
+import base64
+from collections.abc import Awaitable, Callable, Sequence
+from typing import Any
+
+from mcp_types import CallToolResult, ImageContent, TextContent
+from pydantic import BaseModel, Field
+
+from . import registry
+from .environment import Environment, Observation
+
+
+class StepOutput(BaseModel):
+    """What every environment action returns."""
+
+    episode_id: str
+    status: str = Field(description="running, finished, step_limit or aborted")
+    active_environment: str = Field(description="web or embodied")
+    steps: int
+    steps_left: int
+    observation: dict[str, Any] = Field(default_factory=dict, description="the environment's structured observation")
+
+
+def tool_result(model: BaseModel, text: str, images: Sequence[bytes] = ()) -> CallToolResult:
+    content: list[Any] = [TextContent(type="text", text=text)]
+    for png in images:
+        content.append(ImageContent(type="image", data=base64.b64encode(png).decode("ascii"), mime_type="image/png"))
+    return CallToolResult(content=content, structured_content=model.model_dump(mode="json"))
+
+
+def footer(episode: Any) -> str:
+    line = f"[{episode.id} · {episode.active} · step {episode.steps}/{episode.task.step_limit}"
+    if episode.status != "running":
+        line += f" · ended: {episode.end_reason}"
+    return line + "]"
+
+
+def step_result(episode: Any, observation: Observation, *, include_images: bool = True) -> CallToolResult:
+    model = StepOutput(
+        episode_id=episode.id,
+        status=episode.status,
+        active_environment=episode.active,
+        steps=episode.steps,
+        steps_left=episode.steps_left,
+        observation=observation.data,
+    )
+    text = f"{observation.text}\n{footer(episode)}"
+    return tool_result(model, text, observation.images if include_images else ())
+
+
+def environment_for_tool(tool: str) -> str | None:
+    """Environment tools are named <environment>_<action> after the registry name of the environment they are
+    made for (ewa_mcp/core/registry.py), so a kitchen tool called on a street episode is refused before anything runs."""
+    prefix = tool.partition("_")[0]
+    return prefix if prefix in registry.environments() else None
+
+
+async def env_action(
+    episodes: Any,
+    episode_id: str,
+    tool: str,
+    args: dict[str, Any],
+    environment: str,
+    action: Callable[[Environment], Awaitable[Observation]],
+) -> CallToolResult:
+    """Run ``action`` on the episode's ``environment`` (web/embodied) through the episode manager.
+    Like every call on a running episode, it is recorded and uses one step."""
+
+    async def run(episode: Any) -> Observation:
+        return await action(episode.environment(environment))
+
+    episode, observation = await episodes.act(episode_id, tool, args, run, environment=environment,
+                                              requires=environment_for_tool(tool))
+    return step_result(episode, observation)

@@ -1,0 +1,18 @@
+"""The web environment: a Playwright-driven Chromium with WebArena's action grammar.
+
+Importing this package does not import Playwright; ``ewa_mcp.envs.browser.env`` does.
+``find_chromium`` (in ``ewa_mcp.envs.browser.chromium``) is the browser discovery other parts may reuse.
+"""
+
+from __future__ import annotations
+
+from ewa_mcp.core.registry import Domain, EnvironmentSpec
+
+BROWSER = EnvironmentSpec("browser", "web", f"{__name__}.env:BrowserEnvironment", f"{__name__}.tools",
+                          "browser_* tools", tool_order=20)
+
+# Web goals every domain with a browser may carry (graded by this world's checks.py).
+WEB_GOALS = ("recipe_completed", "order_placed", "directions_shown", "page_visited")
+WEB_CHECKS = {kind: f"{__name__}.checks:web_goal" for kind in WEB_GOALS}
+
+DOMAINS = [Domain("demo", (BROWSER,), difficulties=(), scored=False)]

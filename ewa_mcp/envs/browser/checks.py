@@ -1,0 +1,143 @@
+"""Web goals, checked against the events the embedded sites emitted for the episode.
+
+The reference graded the recipe site by "some recipe reached its last step" and the shop by
+the URL of a transient pop-up; here each goal names what must have happened and the check
+looks for exactly that event.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ewa_mcp.core.taskmodel import DirectionsShown, OrderPlaced, PageVisited, RecipeCompleted
+
+from ewa_mcp.graders.models import CheckContext, ConditionResult
+
+
+def _as_int(value: Any) -> int | None:
+    try:
+        return int(value)
+    except (TypeError, ValueError):
+        return None
+
+
+def _same_text(a: Any, b: Any) -> bool:
+    return isinstance(a, str) and isinstance(b, str) and a.strip().casefold() == b.strip().casefold()
+
+
+def orders(events: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """The orders placed in the episode, in order."""
+    return [
+        e["order"]
+        for e in events
+        if e.get("site") == "shop" and e.get("type") == "order_placed" and isinstance(e.get("order"), dict)
+    ]
+
+
+def order_matches(order: dict[str, Any], goal: OrderPlaced) -> bool:
+    """The order holds the product (and size) in exactly the quantity asked, at the store asked."""
+    if goal.store_id is not None and order.get("store_id") != goal.store_id:
+        return False
+    quantity = 0
+    for item in order.get("items") or []:
+        if not isinstance(item, dict) or item.get("product_id") != goal.product_id:
+            continue
+        if goal.size is not None and not _same_text(item.get("size"), goal.size):
+            continue
+        # One product split over several lines of the same order counts once, summed.
+        quantity += _as_int(item.get("quantity")) or 0
+    return quantity == goal.quantity
+
+
+def matching_orders(events: list[dict[str, Any]], goal: OrderPlaced) -> list[dict[str, Any]]:
+    return [o for o in orders(events) if order_matches(o, goal)]
+
+
+def check_recipe(goal: RecipeCompleted, events: list[dict[str, Any]]) -> ConditionResult:
+    steps = [e for e in events if e.get("site") == "recipes" and e.get("type") == "recipe_step"]
+    best = 0
+    last_step_of: int | None = None
+    completed_other: list[str] = []
+    for e in steps:
+        step, of = _as_int(e.get("step")), _as_int(e.get("of"))
+        if step is None or of is None or of < 1:
+            continue
+        if e.get("recipe_id") == goal.recipe_id:
+            best = max(best, step)
+            last_step_of = of
+            if step == of:
+                return ConditionResult(side="web", kind=goal.kind, description=_describe(goal), met=True,
+                                       detail={"recipe_id": goal.recipe_id, "step": step, "of": of})
+        elif step == of:
+            completed_other.append(str(e.get("recipe_id")))
+    detail: dict[str, Any] = {"recipe_id": goal.recipe_id, "furthest_step": best, "of": last_step_of}
+    note = None
+    if completed_other:
+        # The reference counted any finished recipe; a look-alike recipe is a failure here.
+        detail["completed_other_recipes"] = sorted(set(completed_other))
+        note = "a different recipe was followed to its last step"
+    return ConditionResult(side="web", kind=goal.kind, description=_describe(goal), met=False, detail=detail, note=note)
+
+
+def check_order(goal: OrderPlaced, events: list[dict[str, Any]]) -> ConditionResult:
+    found = matching_orders(events, goal)
+    placed = orders(events)
+    detail: dict[str, Any] = {"orders_placed": len(placed)}
+    if found:
+        detail["order_id"] = found[0].get("order_id")
+        detail["store_id"] = found[0].get("store_id")
+        return ConditionResult(side="web", kind=goal.kind, description=_describe(goal), met=True, detail=detail)
+    note = "no order was placed" if not placed else "no order has this product, size, quantity and store"
+    return ConditionResult(side="web", kind=goal.kind, description=_describe(goal), met=False, detail=detail, note=note)
+
+
+def check_directions(goal: DirectionsShown, events: list[dict[str, Any]]) -> ConditionResult:
+    shown = [e for e in events if e.get("site") == "map" and e.get("type") == "directions"]
+    met = any(e.get("origin") == goal.origin and e.get("destination") == goal.destination for e in shown)
+    detail = {"directions_shown": [[e.get("origin"), e.get("destination")] for e in shown][-5:]}
+    return ConditionResult(side="web", kind=goal.kind, description=_describe(goal), met=met, detail=detail)
+
+
+def check_page(goal: PageVisited, events: list[dict[str, Any]]) -> ConditionResult:
+    met = any(
+        e.get("type") == "page_view"
+        and e.get("site") == goal.site
+        and isinstance(e.get("path"), str)
+        and e["path"].startswith(goal.path_prefix)
+        for e in events
+    )
+    return ConditionResult(side="web", kind=goal.kind, description=_describe(goal), met=met)
+
+
+def check_web_goal(goal: Any, events: list[dict[str, Any]]) -> ConditionResult:
+    if isinstance(goal, RecipeCompleted):
+        return check_recipe(goal, events)
+    if isinstance(goal, OrderPlaced):
+        return check_order(goal, events)
+    if isinstance(goal, DirectionsShown):
+        return check_directions(goal, events)
+    if isinstance(goal, PageVisited):
+        return check_page(goal, events)
+    raise TypeError(f"not a web goal: {goal!r}")
+
+
+def _describe(goal: Any) -> str:
+    if isinstance(goal, RecipeCompleted):
+        return f"recipe {goal.recipe_id} shown to its last step"
+    if isinstance(goal, OrderPlaced):
+        parts = [f"{goal.quantity} × {goal.product_id}"]
+        if goal.size:
+            parts.append(f"size {goal.size}")
+        if goal.store_id:
+            parts.append(f"at {goal.store_id}")
+        return "order " + ", ".join(parts)
+    if isinstance(goal, DirectionsShown):
+        return f"directions {goal.origin} → {goal.destination}"
+    if isinstance(goal, PageVisited):
+        return f"visited {goal.site}:{goal.path_prefix}…"
+    return goal.kind
+
+
+def web_goal(goal: Any, ctx: CheckContext) -> ConditionResult:
+    """The registry's entry point for every web goal kind (docs/grading.md, "Web goals")."""
+    return check_web_goal(goal, ctx.events)

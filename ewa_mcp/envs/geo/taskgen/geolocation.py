@@ -1,0 +1,116 @@
+"""Generates the geolocation tasks: a baseline and an embodied variant per location.
+
+``generate_tasks(out_dir)`` writes ``geolocation-baseline.json`` and
+``geolocation-embodied.json`` (task lists) and returns how many tasks it wrote. Output is
+deterministic: rerunning it over an unchanged location set reproduces the files byte for
+byte (a test checks that the committed files are current).
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+from ewa_mcp.core.taskmodel import GeoAnswer, GeoStart, StartState, Task, ToolCall, WebStart
+from .. import gazetteer
+from ..hardness import task_difficulty
+from ..locations import LOCATIONS_LIST, Location
+
+SETTINGS = ("baseline", "embodied")
+# Every call is a step (looks and wiki reading too), so the baseline has room to look once and read the wiki.
+STEP_LIMITS = {"baseline": 10, "embodied": 40}
+FILE_NAMES = {setting: f"geolocation-{setting}.json" for setting in SETTINGS}
+
+INTENTS = {
+    "baseline": (
+        "Where in the world are you? You see a single north-facing street view and cannot move. Study it "
+        "(geo_look) and call submit_location with your best estimate of the latitude and longitude and of the "
+        "continent, country, city and street."
+    ),
+    "embodied": (
+        "Where in the world are you? Look around (geo_look), walk to nearby standpoints (geo_move) and research "
+        "what you see in the wiki (switch_environment to the web), then call submit_location with the latitude "
+        "and longitude and the continent, country, city and street."
+    ),
+}
+
+
+def task_id(loc: Location, setting: str) -> str:
+    return f"geo-{int(loc.id[1:]):04d}-{setting}"
+
+
+def answer_for(loc: Location) -> GeoAnswer:
+    return GeoAnswer(
+        lat=loc.lat,
+        lng=loc.lng,
+        continent=loc.continent or gazetteer.country_continent(loc.city.iso),
+        country=loc.country.name,
+        city=loc.city.name,
+        street=loc.street,
+    )
+
+
+def _oracle(loc: Location, setting: str, answer: GeoAnswer) -> list[ToolCall]:
+    submit = ToolCall(tool="submit_location", args={
+        "lat": answer.lat, "lng": answer.lng, "continent": answer.continent, "country": answer.country,
+        "city": answer.city, "street": answer.street,
+    })
+    if setting == "baseline":
+        return [ToolCall(tool="geo_look", args={"direction": "north"}), submit]
+    # Walk one step along the street (p1 is always adjacent to the start, see graph.py).
+    return [ToolCall(tool="geo_look", args={"direction": "all"}), ToolCall(tool="geo_move", args={"neighbour": "p1"}),
+            submit]
+
+
+def build_task(loc: Location, setting: str) -> Task:
+    answer = answer_for(loc)
+    start = StartState(
+        environment="embodied",
+        web=WebStart(start_url="wiki:/") if setting == "embodied" else None,
+        embodied=GeoStart(location_id=loc.id, setting=setting),
+    )
+    metadata: dict[str, Any] = {
+        "setting": setting,
+        "cue_level": loc.difficulty,  # which level the cue placement makes hard (locations.py)
+        "location_id": loc.id,
+        "country_code": loc.city.iso,
+        "continent": answer.continent,
+        "generator": "ewa_mcp.envs.geo.taskgen.geolocation",
+    }
+    return Task(
+        id=task_id(loc, setting),
+        domain="geolocation",
+        difficulty=task_difficulty(loc),
+        intent=INTENTS[setting],
+        start=start,
+        answer=answer,
+        step_limit=STEP_LIMITS[setting],
+        oracle=_oracle(loc, setting, answer),
+        metadata=metadata,
+    )
+
+
+def build_tasks(setting: str) -> list[Task]:
+    return [build_task(loc, setting) for loc in LOCATIONS_LIST]
+
+
+def generate_tasks(out_dir: Path) -> int:
+    out_dir.mkdir(parents=True, exist_ok=True)
+    count = 0
+    for setting in SETTINGS:
+        tasks = build_tasks(setting)
+        payload = [t.model_dump(mode="json", exclude_defaults=False) for t in tasks]
+        text = json.dumps(payload, ensure_ascii=False, indent=1) + "\n"
+        (out_dir / FILE_NAMES[setting]).write_text(text, encoding="utf-8")
+        count += len(tasks)
+    return count
+
+
+if __name__ == "__main__":  # python -m ewa_mcp.envs.geo.taskgen.geolocation [out_dir]
+    import sys
+
+    from ewa_mcp.core.paths import tasks_dir
+
+    target = Path(sys.argv[1]) if len(sys.argv) > 1 else tasks_dir() / "geolocation"
+    print(f"wrote {generate_tasks(target)} geolocation tasks to {target}")

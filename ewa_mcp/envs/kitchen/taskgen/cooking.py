@@ -1,0 +1,284 @@
+"""Cooking tasks: find the right recipe online (constraints single out one of a look-alike pair),
+follow it to its last step, then cook it in a kitchen that holds what it needs — or buy the
+missing food on the shop, for delivery to the kitchen, first.
+
+Three templates, each with its difficulty:
+  * cook (easy): one constraint (or none for a unique name), every food in the kitchen;
+  * buy (medium): one constraint, one needed food missing and ordered for delivery;
+  * hard: two constraints that together single out the recipe, two needed foods missing and
+    ordered for delivery (in one order).
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from ..planner import check_recipe_executable, plan_ops, scene_inventory
+from ewa_mcp.core.taskmodel import KitchenStart, OrderPlaced, RecipeCompleted, StartState, Task, WebStart
+from ewa_mcp.websites.recipes.catalog import Filters, load_catalog
+from ewa_mcp.websites.shop import catalog as shop_catalog
+from ewa_mcp.websites.recipes.vocabulary import EQUIPMENT_WORDS, KITCHEN_PRODUCTS, required_equipment
+from ewa_mcp.taskgen.common import call, ref, rng_for, site_url, step_limit_for
+from .recipe_goals import FOODS, PIECE_SOURCE, goals_from_ops, recipe_ops
+
+SCENES = [f"FloorPlan{i}" for i in range(1, 31)]
+TASKS_PER_RECIPE = 5  # cook and hard tasks of one recipe, together
+HARD_PER_RECIPE = 3  # of those, hard ones (recipes with a look-alike and two or more kitchen foods)
+SHOPPING_VARIANTS_TARGET = 40
+DIFFICULTY = {"cook": "easy", "buy": "medium", "hard": "hard"}
+# Every cooking intent says which parts of a recipe the kitchen goal leaves out (issue 16).
+KITCHEN_SCOPE = ("Only the kitchen steps count: steps and ingredients the recipe page marks as not in the "
+                 "kitchen are not part of the kitchen goal.")
+
+DIET_LABEL = {"vegetarian": "Vegetarian", "vegan": "Vegan", "non-vegetarian": "Non-vegetarian"}
+
+
+def constraint_options(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dict[str, Any]]]:
+    """Every (intent suffix, search filter) that is true of this recipe and tells it from some look-alike."""
+    same_name = [r for r in catalog.recipes if r["name"] == recipe["name"]]
+    others = [r for r in same_name if r["id"] != recipe["id"]]
+    names = {i["name"] for i in recipe["ingredients"]}
+    other_names = set().union(*({i["name"] for i in o["ingredients"]} for o in others)) if others else set()
+    options: list[tuple[str, dict[str, Any]]] = []
+    options.append((f"Diet type: {DIET_LABEL[recipe['diet']]}", {"diet": recipe["diet"]}))
+    options.append((f"Difficulty level: {recipe['difficulty'].capitalize()}", {"difficulty": recipe["difficulty"]}))
+    options += [(f"Use equipment: {e}", {"equipment": [e]}) for e in recipe["equipment"]]
+    options += [(f"Include ingredient: {n}", {"include": [n]}) for n in sorted(names - other_names)]
+    options += [(f"Exclude ingredient: {n}", {"exclude": [n]}) for n in sorted(other_names - names)]
+    return options
+
+
+def singles_out(recipe: dict[str, Any], catalog: Any, filters: dict[str, Any]) -> bool:
+    """Searching the recipe's name with these filters leaves exactly this recipe among those of its name."""
+    f = Filters(q=recipe["name"], diet=filters.get("diet", ""), difficulty=filters.get("difficulty", ""),
+                include=tuple(filters.get("include", ())), exclude=tuple(filters.get("exclude", ())),
+                equipment=tuple(filters.get("equipment", ())))
+    return [r["id"] for r in catalog.search(f) if r["name"] == recipe["name"]] == [recipe["id"]]
+
+
+def constraints_for(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dict[str, Any]]]:
+    """(intent suffix, search filters) pairs that leave exactly this recipe among those with its name."""
+    unique = sum(r["name"] == recipe["name"] for r in catalog.recipes) == 1
+    good: list[tuple[str, dict[str, Any]]] = [("", {})] if unique else []
+    good += [(suffix, f) for suffix, f in constraint_options(recipe, catalog) if singles_out(recipe, catalog, f)]
+    return good
+
+
+def merge_filters(a: dict[str, Any], b: dict[str, Any]) -> dict[str, Any] | None:
+    """Both filters at once (None when they set the same single-valued filter)."""
+    merged = dict(a)
+    for key, value in b.items():
+        if key in ("diet", "difficulty"):
+            if key in merged:
+                return None
+            merged[key] = value
+        else:
+            merged[key] = [*merged.get(key, []), *value]
+    return merged
+
+
+def two_constraints(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dict[str, Any]]]:
+    """Pairs of constraints that together single out a recipe with a look-alike, best first: pairs where
+    neither constraint alone does (the agent must apply both), then the others."""
+    if recipe.get("pair_id") is None:
+        return []
+    options = constraint_options(recipe, catalog)
+    alone = {suffix: singles_out(recipe, catalog, f) for suffix, f in options}
+    pairs: list[tuple[int, str, dict[str, Any]]] = []
+    for i, (s1, f1) in enumerate(options):
+        for s2, f2 in options[i + 1:]:
+            merged = merge_filters(f1, f2)
+            if merged is not None and singles_out(recipe, catalog, merged):
+                pairs.append((int(alone[s1]) + int(alone[s2]), f"{s1}. {s2}", merged))
+    pairs.sort(key=lambda item: item[0])  # stable: the options' own order within a rank
+    return [(suffix, merged) for _, suffix, merged in pairs]
+
+
+def recipe_web_oracle(recipe: dict[str, Any], filters: dict[str, Any]) -> list[Any]:
+    """Search with the constraint's filter, open the recipe, go to its last step.
+
+    The step viewer's URL encodes the step, so the oracle jumps to the last one instead of clicking
+    Next n-1 times: same goal, a third of the browser time for a whole-suite run."""
+    steps = len(recipe["steps"])
+    calls = [call("browser_goto", url=site_url("recipes", "/", q=recipe["name"], **filters)),
+             call("browser_click", element=ref("link", recipe["name"]))]
+    if steps > 1:
+        calls.append(call("browser_goto", url=site_url("recipes", f"/recipe/{recipe['id']}", step=steps)))
+    return calls
+
+
+def delivery_store(products: list[str]) -> tuple[str, str, list[str]] | None:
+    """(store id, store name, sizes): the first store that has every product in its first size."""
+    sizes = [shop_catalog.get_product(p).sizes[0].label for p in products]
+    for store in shop_catalog.load_stores():
+        if all(shop_catalog.get_product(p).offer(size, store.id) is not None
+               and shop_catalog.stock(p, size, store.id) > 0 for p, size in zip(products, sizes)):
+            return store.id, store.name, sizes
+    return None
+
+
+def buy_oracle(products: list[str]) -> list[Any]:
+    """Add each product (its first size, from one store that has them all) to the cart, then check out
+    for delivery to the kitchen."""
+    found = delivery_store(products)
+    assert found is not None, f"no store has all of {products}"
+    _, store_name, sizes = found
+    calls: list[Any] = []
+    for product, size in zip(products, sizes):
+        calls += [call("browser_goto", url=site_url("shop", f"/product/{product}")),
+                  call("browser_type", element=ref("combobox", "Size"), text=size),
+                  call("browser_type", element=ref("combobox", "Store"), text=store_name),
+                  call("browser_click", element=ref("button", "Add to cart"))]
+    return [*calls, call("browser_goto", url=site_url("shop", "/checkout")),
+            call("browser_click", element=ref("radio", "Deliver to my kitchen")),
+            call("browser_click", element=ref("button", "Place order"))]
+
+
+def kitchen_steps(recipe: dict[str, Any]) -> dict[str, list[int]]:
+    """Which step numbers the kitchen goal covers, and which the recipe page marks as not kitchen steps."""
+    return {"kitchen": [n for n, step in enumerate(recipe["steps"], 1) if step.get("kitchen")],
+            "not_kitchen": [n for n, step in enumerate(recipe["steps"], 1) if not step.get("kitchen")]}
+
+
+def kitchen_equipment(recipe: dict[str, Any]) -> set[str]:
+    """Every kitchen object type (tool, vessel, appliance, dish) the kitchen steps need: what their ops
+    use, and what their kitchen notes name ("fry it in the pan" needs a Pan, even where a Pot would do)."""
+    needed: set[str] = set()
+    for step in recipe["steps"]:
+        if not step.get("kitchen"):
+            continue
+        for op in step.get("ops", []):
+            needed |= required_equipment(op)
+        needed |= {EQUIPMENT_WORDS[w] for w in re.findall(r"[a-z]+", step["kitchen"].lower()) if w in EQUIPMENT_WORDS}
+    return needed
+
+
+def missing_equipment(recipe: dict[str, Any], inventory: dict[str, set[str]]) -> set[str]:
+    """The equipment the recipe's kitchen steps need that this kitchen lacks (equipment is never delivered)."""
+    return kitchen_equipment(recipe) - inventory["tools"] - inventory["receptacles"]
+
+
+def needed_foods(ops: list[dict[str, Any]]) -> set[str]:
+    return {PIECE_SOURCE.get(op.get("object", ""), op.get("object", "")) for op in ops} & FOODS
+
+
+def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str, Any], n: int,
+              buy: list[str] | None = None, kind: str | None = None) -> Task | None:
+    buy = list(buy or [])
+    kind = kind or ("buy" if buy else "cook")
+    ops = recipe_ops(recipe)
+    if missing_equipment(recipe, scene_inventory(scene)):
+        return None  # the shop sells food only: a kitchen without the steps' pan, bowl, ... cannot do them
+    ok, _ = check_recipe_executable(scene, ops, available_extra_types=buy)
+    if not ok:
+        return None
+    products = [KITCHEN_PRODUCTS[food] for food in buy]
+    if buy and delivery_store(products) is None:
+        return None
+    kitchen = [call(c["tool"], **c["args"]) for c in plan_ops(scene, ops, delivered_types=buy)]
+    web = recipe_web_oracle(recipe, filters)
+    web_goals: list[Any] = [RecipeCompleted(recipe_id=recipe["id"])]
+    intent = f"Cook {recipe['name']}." + (f" {suffix}." if suffix else "")
+    if buy:
+        web += buy_oracle(products)
+        web_goals += [OrderPlaced(product_id=product) for product in products]
+        if len(buy) == 1:
+            intent += f" Your kitchen has no {buy[0]}: order it from the shop for delivery to your kitchen first."
+        else:
+            missing = " and no ".join(buy)
+            intent += (f" Your kitchen has no {missing}: order them from the shop for delivery to your kitchen "
+                       "first.")
+    intent += " " + KITCHEN_SCOPE
+    oracle = [*web, call("switch_environment", target="embodied", message=f"cook {recipe['name']}"), *kitchen,
+              call("finish_episode")]
+    steps = kitchen_steps(recipe)
+    return Task(
+        # Provisional; generate() gives every task an opaque id (the recipe id is the recipe page's URL).
+        id=f"cooking-{kind}-{recipe['id']}-{n:02d}",
+        domain="cooking",
+        difficulty=DIFFICULTY[kind],
+        intent=intent,
+        start=StartState(environment="web", web=WebStart(start_url="recipes:/"),
+                         embodied=KitchenStart(scene=scene)),
+        web_goals=web_goals,
+        embodied_goals=goals_from_ops(ops),
+        # Budget for an agent that reads every step (Next, Next, ...), which the oracle skips.
+        step_limit=step_limit_for(len(oracle) + len(recipe["steps"])),
+        oracle=oracle,
+        metadata={"recipe_id": recipe["id"], "recipe_name": recipe["name"], "scene": scene,
+                  "constraint": suffix or None, "pair_id": recipe.get("pair_id"),
+                  "buy": (buy[0] if len(buy) == 1 else buy) if buy else None,
+                  "kitchen_steps": steps["kitchen"], "not_kitchen_steps": steps["not_kitchen"]},
+    )
+
+
+def generate() -> list[Task]:
+    catalog = load_catalog()
+    inventories = {s: scene_inventory(s) for s in SCENES}
+    tasks: list[Task] = []
+    shopping = 0
+    for recipe in sorted(catalog.recipes, key=lambda r: r["id"]):
+        rng = rng_for("cooking", recipe["id"])
+        constraints = constraints_for(recipe, catalog)
+        if not constraints:
+            continue  # cannot be singled out: never written (validation)
+        ops = recipe_ops(recipe)
+        foods = needed_foods(ops)
+        scenes = SCENES[:]
+        rng.shuffle(scenes)
+        # Every template (cook, buy, hard) cooks in a kitchen that has all the steps' equipment.
+        scenes = [s for s in scenes if not missing_equipment(recipe, inventories[s])]
+        # Hard: two constraints, two needed foods missing (replacing cook tasks, so the suite keeps its size).
+        hard = 0
+        pairs = two_constraints(recipe, catalog)
+        if pairs and len(foods) >= 2:
+            for scene in scenes:
+                if hard >= HARD_PER_RECIPE:
+                    break
+                missing = sorted(foods - inventories[scene]["food"])
+                if len(missing) != 2:
+                    continue
+                suffix, filters = pairs[hard % len(pairs)]
+                task = make_task(recipe, scene, suffix, filters, hard, buy=missing, kind="hard")
+                if task is not None:
+                    tasks.append(task)
+                    hard += 1
+        n = 0
+        for scene in scenes:
+            if n + hard >= TASKS_PER_RECIPE:
+                break
+            if not foods <= inventories[scene]["food"]:
+                continue
+            suffix, filters = constraints[n % len(constraints)]
+            task = make_task(recipe, scene, suffix, filters, n)
+            if task is not None:
+                tasks.append(task)
+                n += 1
+        if shopping < SHOPPING_VARIANTS_TARGET:
+            # One variant where exactly one needed food is missing and must be bought online.
+            for scene in scenes:
+                missing = sorted(foods - inventories[scene]["food"])
+                if len(missing) == 1:
+                    suffix, filters = constraints[0]
+                    task = make_task(recipe, scene, suffix, filters, 0, buy=missing)
+                    if task is not None:
+                        tasks.append(task)
+                        shopping += 1
+                    break
+    return with_opaque_ids(tasks)
+
+
+def with_opaque_ids(tasks: list[Task]) -> list[Task]:
+    """Number the tasks of each template in a seeded random order: ``cooking-hard-0007``. An id derived
+    from the recipe would hand the agent the recipe page's URL (/recipe/r071) and skip the search."""
+    order = list(range(len(tasks)))
+    rng_for("cooking", "task-ids").shuffle(order)
+    counts: dict[str, int] = {}
+    renamed: list[Task | None] = [None] * len(tasks)
+    for index in order:
+        task = tasks[index]
+        kind = task.id.split("-")[1]
+        counts[kind] = counts.get(kind, 0) + 1
+        renamed[index] = task.model_copy(update={"id": f"cooking-{kind}-{counts[kind]:04d}"})
+    return sorted((t for t in renamed if t is not None), key=lambda t: t.id)

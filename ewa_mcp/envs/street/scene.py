@@ -1,0 +1,257 @@
+"""What a standing agent can see in one direction: the street ahead and its cross streets, the
+buildings and shop signs on either side, tall landmarks on the skyline, street-name signs.
+
+The same Scene feeds the image renderer (street_view.py) and the text description (describe), so
+text-only and vision agents observe the same world.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import math
+from dataclasses import dataclass, field
+
+from ewa_mcp.geometry import angle_diff, bearing_deg, cardinal_word, haversine_m, offset_flat
+from .world import CityGraph, Place, World
+
+VIEW_HALF_ANGLE = 50.0  # degrees either side of the view heading that count as "in view"
+NEAR_RANGE_M = 160.0  # buildings along the street that are described
+SKYLINE_RANGE_M = 1500.0
+SKYLINE_MIN_HEIGHT_M = 120.0
+AHEAD_LOOK_M = 250.0
+SIGN_KINDS = {"store", "restaurant", "shop", "station", "market"}  # kinds whose name is on a sign
+FACADE_KINDS = {"landmark", "church", "museum", "library", "hotel", "theater", "market", "station"}
+# A place is seen where its entrance is: on the street front of the node it is attached to, this far
+# towards the building (at most). Building centroids can lie 80 m inside a large block; measuring to
+# them made a landmark's distance stay put while the agent walked past it.
+ENTRANCE_SETBACK_M = 10.0
+
+
+@dataclass
+class Frontage:
+    side: str  # left, right or ahead
+    distance_m: float  # distance along the view direction (the renderer's depth)
+    lateral_m: float  # distance to the side of the view axis
+    range_m: float  # straight-line distance from the agent to the entrance (what the text says)
+    rel_angle: float  # degrees right of the view centre
+    kind: str
+    sign: str | None  # the shop sign's text; None for landmarks (their names are not painted)
+    style: str  # architectural style or "" (drives the facade drawing)
+    height_m: float | None
+    hint: str  # a visual description without the name
+    place_id: str
+
+
+@dataclass
+class Opening:
+    side: str  # left, right or both
+    distance_m: float
+    street: str  # the street to the left (or the one side's street)
+    right_street: str | None = None  # side "both": the street to the right when it is named otherwise
+
+
+@dataclass
+class SkylineItem:
+    rel_angle: float  # degrees right of the view centre
+    distance_m: float
+    height_m: float
+    style: str
+    hint: str
+    place_id: str
+
+
+@dataclass
+class Scene:
+    city: str
+    node: str
+    heading: float
+    label: str  # front / right / back / left or N / E / S / W
+    road_ahead: bool
+    ahead_street: str | None
+    ahead_length_m: float
+    openings: list[Opening] = field(default_factory=list)
+    frontages: list[Frontage] = field(default_factory=list)
+    skyline: list[SkylineItem] = field(default_factory=list)
+    street_signs: list[str] = field(default_factory=list)
+    open_space: str = ""  # a park's look where it lies across the sidewalk this way ("" for none)
+    seed: int = 0
+
+
+def _style(p: Place) -> str:
+    return str(p.facts.get("architectural_style", "")) if p.kind in FACADE_KINDS else ""
+
+
+def entrance(world: World, p: Place) -> tuple[float, float]:
+    """Where a place meets its street: a few metres from its node towards the building (cached)."""
+    cache: dict[str, tuple[float, float]] = world.__dict__.setdefault("_entrances", {})
+    if p.id not in cache:
+        node = world.node(p.node)
+        d = min(p.offset_m, ENTRANCE_SETBACK_M) if p.heading_from_node is not None else 0.0
+        cache[p.id] = offset_flat(node.lat, node.lng, p.heading_from_node or 0.0, d)
+    return cache[p.id]
+
+
+def what_is_seen(kind: str, sign: str | None, hint: str) -> str:
+    """A place in words: a shop's sign, else (and also) its look; never a landmark's name."""
+    what = f'a sign reading "{sign}" ({kind})' if sign else hint.rstrip(".").lower()
+    if sign and hint:
+        what += f" — {hint.rstrip('.').lower()}"
+    return what
+
+
+def places_here(world: World, graph: CityGraph, i: int, heading: float) -> list[str]:
+    """Sentences for the places whose entrance is at this very node, with the side they are on."""
+    out = []
+    for p in sorted(world.places_near(graph.ids[i]), key=lambda p: p.id):
+        if p.heading_from_node is None:
+            side = "beside you"
+        else:
+            rel = angle_diff(p.heading_from_node, heading)
+            side = ("ahead of you" if abs(rel) <= 30 else "behind you" if abs(rel) >= 150
+                    else "on your right" if rel > 0 else "on your left")
+        what = what_is_seen(p.kind, p.name if p.kind in SIGN_KINDS else None, p.description_hint)
+        out.append(f"{side}, {what}.")
+    return out
+
+
+OPEN_SPACE_KINDS = {"park"}
+OPEN_SPACE_HALF_ANGLE = 45.0
+OPEN_SPACE_MIN_REACH_M = 120.0  # a small park is seen this far from its centre; a large one further:
+OPEN_SPACE_MARGIN_M = 60.0  # its centre lies as far inside as from its street node, plus this
+
+
+def open_space_this_way(world: World, graph: CityGraph, i: int, heading: float) -> str:
+    """The look of a park lying this way beside the street (its centre within reach and within 45° of
+    the view): a view across it shows lawns and trees, not building fronts. The data has no park
+    outlines, so a park's reach is judged from how far its centre lies from its street node."""
+    lat0, lng0 = graph.lat[i], graph.lng[i]
+    best: tuple[float, str] | None = None
+    for p in world.places.values():
+        if p.city != graph.city or p.kind not in OPEN_SPACE_KINDS:
+            continue
+        d = haversine_m(lat0, lng0, p.lat, p.lng)
+        reach = max(OPEN_SPACE_MIN_REACH_M, p.offset_m + OPEN_SPACE_MARGIN_M)
+        if d > reach or abs(angle_diff(bearing_deg(lat0, lng0, p.lat, p.lng), heading)) > OPEN_SPACE_HALF_ANGLE:
+            continue
+        if best is None or d < best[0]:
+            best = (d, p.description_hint or "an open park with lawns and trees")
+    return best[1] if best else ""
+
+
+def compute_scene(world: World, graph: CityGraph, i: int, heading: float, label: str) -> Scene:
+    node_id = graph.ids[i]
+    seed = int(hashlib.sha1(f"{node_id}:{round(heading) % 360}".encode()).hexdigest()[:8], 16)
+    scene = Scene(graph.city, node_id, heading % 360.0, label, False, None, 0.0, seed=seed)
+    # The street ahead: follow the straightest continuation while it stays within 20 degrees.
+    ahead = [(j, length, s, h) for j, length, s, h in graph.adj[i] if abs(angle_diff(h, heading)) <= 30.0]
+    if ahead:
+        j, length, s, h = min(ahead, key=lambda link: abs(angle_diff(link[3], heading)))
+        scene.road_ahead = True
+        scene.ahead_street = graph.streets[s]
+        travelled, prev, cur, cur_h = length, i, j, h
+        while travelled < AHEAD_LOOK_M:
+            for k, _, s2, h2 in graph.adj[cur]:
+                rel = angle_diff(h2, cur_h)
+                if k != prev and 45.0 <= abs(rel) <= 135.0 and graph.streets[s2] != scene.ahead_street:
+                    side = "right" if rel > 0 else "left"
+                    existing = next((o for o in scene.openings if abs(o.distance_m - travelled) < 5), None)
+                    if existing and existing.side != side:
+                        # one cross street may change its name here (North / South 11th Street): each
+                        # side is named as the map's directions name the street one turns onto
+                        left, right = ((existing.street, graph.streets[s2]) if side == "right"
+                                       else (graph.streets[s2], existing.street))
+                        existing.side, existing.street = "both", left
+                        existing.right_street = right if right != left else None
+                    elif existing is None:
+                        scene.openings.append(Opening(side, round(travelled, 1), graph.streets[s2]))
+            straight = [(k, ln, s2, h2) for k, ln, s2, h2 in graph.adj[cur]
+                        if k != prev and abs(angle_diff(h2, cur_h)) <= 20.0]
+            if not straight:
+                break
+            k, ln, _, h2 = min(straight, key=lambda link: abs(angle_diff(link[3], cur_h)))
+            prev, cur, cur_h = cur, k, h2
+            travelled += ln
+        scene.ahead_length_m = round(min(travelled, AHEAD_LOOK_M), 1)
+    lat0, lng0 = graph.lat[i], graph.lng[i]
+    for p in world.places.values():
+        if p.city != graph.city or abs(p.lat - lat0) > 0.015 or abs(p.lng - lng0) > 0.02:
+            continue
+        # Near places are measured to their entrance on the street, far ones (the skyline) to the building.
+        elat, elng = entrance(world, p)
+        d = haversine_m(lat0, lng0, elat, elng)
+        far = d > NEAR_RANGE_M
+        if far:
+            elat, elng = p.lat, p.lng
+            d = haversine_m(lat0, lng0, elat, elng)
+        if d < 1.0:
+            continue
+        rel = angle_diff(bearing_deg(lat0, lng0, elat, elng), heading)
+        if abs(rel) > VIEW_HALF_ANGLE:
+            continue
+        along = d * math.cos(math.radians(rel))
+        lateral = d * math.sin(math.radians(rel))
+        height = p.facts.get("height_m")
+        if not far:
+            side = "ahead" if abs(rel) < 8.0 else ("right" if rel > 0 else "left")
+            scene.frontages.append(Frontage(side, round(max(along, 3.0), 1), round(abs(lateral), 1), round(d, 1),
+                                            round(rel, 1), p.kind, p.name if p.kind in SIGN_KINDS else None,
+                                            _style(p), float(height) if height else None, p.description_hint, p.id))
+        elif height and float(height) >= SKYLINE_MIN_HEIGHT_M and d <= SKYLINE_RANGE_M and abs(rel) <= 40.0:
+            scene.skyline.append(SkylineItem(round(rel, 1), round(d, 1), float(height), _style(p),
+                                             p.description_hint, p.id))
+    scene.open_space = open_space_this_way(world, graph, i, heading)
+    scene.frontages.sort(key=lambda f: f.range_m)
+    scene.skyline.sort(key=lambda s: -s.distance_m)
+    streets = graph.node_streets[i]
+    if len(streets) >= 2:
+        scene.street_signs = list(streets)
+    return scene
+
+
+def opening_words(o: Opening) -> str:
+    at = f"at {int(round(o.distance_m))} m"
+    if o.side != "both":
+        return f"{o.street} opens to the {o.side} {at}"
+    if o.right_street:
+        return f"{o.street} opens to the left and {o.right_street} to the right {at}"
+    return f"{o.street} opens to the left and right {at}"
+
+
+STREET_SIDE_M = 20.0  # an entrance this close to the view's axis is on the street ahead, not off it
+
+
+def frontage_where(scene: Scene, f: Frontage) -> str:
+    """Where a place is, in words that keep two meanings apart: the side of the street ahead (as the
+    map's "on your left" means it: the side of the street one walks along), or, for a place off that
+    street, the direction of sight."""
+    if f.side == "ahead":
+        return "straight ahead"
+    if scene.road_ahead and f.lateral_m <= STREET_SIDE_M and f.distance_m <= scene.ahead_length_m + 10:
+        return f"ahead on the {f.side}-hand side of {scene.ahead_street}"
+    return f"off the street ahead, {int(round(abs(f.rel_angle)))}° to the {f.side} of straight ahead"
+
+
+def describe(scene: Scene) -> str:
+    """One paragraph for text-only agents; never names landmarks, only what a sign would show."""
+    parts = [f"{scene.label} (facing {cardinal_word(scene.heading)}, {round(scene.heading)}°):"]
+    if scene.road_ahead:
+        parts.append(f"{scene.ahead_street} continues ahead for about {int(round(scene.ahead_length_m, -1))} m.")
+        if scene.openings:
+            crossings = "; ".join(opening_words(o) for o in scene.openings[:3])
+            parts.append(f"Cross streets: {crossings}.")
+    else:
+        if scene.open_space:
+            parts.append("No street continues this way: across the sidewalk lies open ground, "
+                         f"{scene.open_space.rstrip('.').lower()}.")
+        else:
+            parts.append("No street continues this way: a row of building fronts across the sidewalk.")
+    for f in scene.frontages[:5]:
+        where = frontage_where(scene, f)  # capitalise its first letter only: street names keep theirs
+        parts.append(f"{where[:1].upper()}{where[1:]}, {int(round(f.range_m))} m away: "
+                     f"{what_is_seen(f.kind, f.sign, f.hint)}.")
+    for s in sorted(scene.skyline, key=lambda s: s.distance_m)[:2]:
+        side = "slightly right" if s.rel_angle > 10 else "slightly left" if s.rel_angle < -10 else "straight ahead"
+        parts.append(f"On the skyline {side}, about {int(round(s.distance_m, -2))} m away: {s.hint.rstrip('.').lower()}.")
+    if scene.street_signs:
+        parts.append("Street signs here: " + " / ".join(scene.street_signs) + ".")
+    return " ".join(parts)

@@ -1,0 +1,387 @@
+"""Deterministic street-view images drawn with Pillow from a Scene.
+
+A pinhole camera 1.7 m above the sidewalk looks along the view heading (90° field of view).
+Buildings stand on facade planes either side of the street, broken where cross streets open;
+landmarks are drawn by architectural style (columns, spires, stepped crowns, glass grids, ...),
+never with their names; shops carry sign boards with their names; tall landmarks rise on the
+skyline; intersections show street-name signs. Same scene -> same pixels.
+
+The camera, sky gradient, bundled font and PNG encoding come from the street-view toolkit
+(``ewa_mcp/street_drawing``), shared with the geolocation views; the facade patterns by
+architectural style and the details a place's description names are this world's own.
+"""
+
+from __future__ import annotations
+
+import random
+
+from PIL import Image, ImageDraw
+
+from ewa_mcp.street_drawing.camera import Camera
+from ewa_mcp.street_drawing.png import encode_png
+from ewa_mcp.street_drawing.sky import sky_gradient
+from ewa_mcp.street_drawing.text import bundled_font
+from .scene import Frontage, Scene
+
+WIDTH, HEIGHT = 480, 330  # large enough for a lion by a door or a clock on a tower to read
+CAMERA_HEIGHT_M = 1.7
+FACADE_X_M = 11.0  # half the distance between facades across a typical street
+ROAD_HALF_M = 6.5
+SKY = (176, 204, 230)
+SKY_TOP = (122, 162, 210)
+AHEAD_END_WALL = 200.0  # a street that ends sooner than this shows the building fronts where it ends
+ROAD = (86, 88, 92)
+SIDEWALK = (170, 166, 158)
+LANE = (235, 225, 160)
+WALL_TONES = [(150, 98, 80), (178, 140, 110), (120, 110, 104), (196, 180, 150), (140, 120, 100), (110, 84, 72),
+              (168, 160, 150), (130, 136, 142)]
+
+STYLE_PALETTES = {
+    "art deco": ((214, 200, 170), (150, 130, 100)),
+    "gothic": ((170, 168, 160), (95, 92, 88)),
+    "beaux-arts": ((232, 222, 200), (170, 160, 140)),
+    "renaissance": ((226, 214, 190), (160, 150, 130)),
+    "neoclassical": ((236, 230, 214), (170, 165, 150)),
+    "greek revival": ((238, 234, 222), (170, 165, 150)),
+    "international": ((120, 150, 170), (60, 80, 96)),
+    "modern": ((130, 160, 185), (70, 90, 110)),
+    "high-tech": ((150, 170, 185), (60, 70, 80)),
+    "brutalist": ((150, 148, 140), (100, 98, 92)),
+    "georgian": ((160, 72, 56), (240, 236, 226)),
+    "federal": ((164, 78, 60), (240, 236, 226)),
+    "romanesque": ((140, 96, 72), (90, 60, 45)),
+    "second empire": ((214, 206, 190), (90, 100, 96)),
+    "postmodern": ((206, 150, 140), (120, 90, 86)),
+    "queen anne": ((150, 70, 52), (40, 40, 40)),
+    "byzantine": ((196, 130, 100), (150, 110, 80)),
+    "tudor": ((170, 110, 80), (70, 50, 40)),
+    "palladian": ((210, 190, 160), (150, 130, 110)),
+    "flemish": ((236, 232, 224), (150, 150, 150)),
+    "neo-futurism": ((150, 175, 195), (200, 190, 170)),
+}
+
+
+def _style_key(style: str) -> str:
+    s = style.lower()
+    for key in STYLE_PALETTES:
+        if key in s:
+            return key
+    if "modernism" in s:
+        return "modern"
+    return ""
+
+
+STREET_CAMERA = Camera(width=WIDTH, height=HEIGHT, horizon=HEIGHT * 0.46, eye_height=CAMERA_HEIGHT_M)  # metres
+
+
+def draw_facade(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], style: str, rng: random.Random,
+                base: tuple[int, int, int] | None = None, floors: int = 6) -> None:
+    """Fill a facade quadrilateral (bottom-near, top-near, top-far, bottom-far) with a style pattern."""
+    key = _style_key(style)
+    main, trim = STYLE_PALETTES.get(key, (base or rng.choice(WALL_TONES), (60, 60, 64)))
+    draw.polygon(quad, fill=main, outline=trim)
+    (bx0, by0), (tx0, ty0), (tx1, ty1), (bx1, by1) = quad
+
+    def lerp(a: tuple[float, float], b: tuple[float, float], t: float) -> tuple[float, float]:
+        return a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t
+
+    near_h = by0 - ty0
+    if near_h < 4:
+        return
+    columns = max(2, min(14, int(abs(bx1 - bx0) / 5) + 2))
+    if key in ("international", "modern", "high-tech", "neo-futurism"):
+        for c in range(1, columns):  # glass curtain wall: mullion grid
+            t = c / columns
+            draw.line([lerp((bx0, by0), (bx1, by1), t), lerp((tx0, ty0), (tx1, ty1), t)], fill=trim, width=1)
+        for f in range(1, floors * 2):
+            t = f / (floors * 2)
+            draw.line([lerp((bx0, by0), (tx0, ty0), t), lerp((bx1, by1), (tx1, ty1), t)], fill=trim, width=1)
+        if key == "high-tech":
+            draw.line([(bx0, by0), (tx1, ty1)], fill=trim, width=2)
+            draw.line([(tx0, ty0), (bx1, by1)], fill=trim, width=2)
+        return
+    window = (60, 70, 84) if key not in ("georgian", "federal") else (40, 46, 56)
+    for f in range(1, floors):
+        for c in range(1, columns):
+            t, u = c / columns, f / floors
+            bottom = lerp((bx0, by0), (bx1, by1), t)
+            top = lerp((tx0, ty0), (tx1, ty1), t)
+            x, y = lerp(bottom, top, u)
+            w = max(1.0, abs(bx1 - bx0) / columns * 0.35)
+            h = max(1.0, (bottom[1] - top[1]) / floors * 0.45)
+            if key in ("gothic", "romanesque", "byzantine", "tudor"):
+                draw.ellipse([x - w, y - h * 1.3, x + w, y - h * 0.3], fill=window)  # arched heads
+            draw.rectangle([x - w, y - h, x + w, y], fill=window)
+    if key in ("beaux-arts", "renaissance", "neoclassical", "greek revival", "palladian"):
+        for c in range(columns + 1):  # a colonnade on the ground floor
+            t = c / columns
+            bottom = lerp((bx0, by0), (bx1, by1), t)
+            top = lerp(bottom, lerp((tx0, ty0), (tx1, ty1), t), 0.3)
+            draw.line([bottom, top], fill=trim, width=2)
+    if key in ("gothic", "flemish"):  # spires along the roof
+        for c in range(0, columns + 1, 2):
+            x, y = lerp((tx0, ty0), (tx1, ty1), c / columns)
+            draw.polygon([(x - 3, y), (x + 3, y), (x, y - max(6.0, near_h * 0.25))], fill=trim)
+    if key == "art deco":  # stepped crown
+        x0, y0 = lerp((tx0, ty0), (tx1, ty1), 0.2)
+        x1, y1 = lerp((tx0, ty0), (tx1, ty1), 0.8)
+        step = max(3.0, near_h * 0.08)
+        draw.polygon([(x0, y0), (x0, y0 - step), (x1, y1 - step), (x1, y1)], fill=main, outline=trim)
+    if key == "second empire":  # mansard roof
+        draw.polygon([(tx0, ty0), (tx1, ty1), (tx1, ty1 - near_h * 0.12), (tx0, ty0 - near_h * 0.12)], fill=trim)
+    if key == "postmodern":  # broken pediment
+        mx, my = lerp((tx0, ty0), (tx1, ty1), 0.5)
+        draw.polygon([(tx0, ty0), (mx - 2, my - near_h * 0.15), (mx - 2, my)], fill=trim)
+        draw.polygon([(tx1, ty1), (mx + 2, my - near_h * 0.15), (mx + 2, my)], fill=trim)
+
+
+# Details a place's description mentions, drawn on its facade (first matching word wins per detail).
+DETAIL_WORDS = {
+    "lions": ("lion",), "clock": ("clock",), "dome": ("dome",), "statue": ("statue", "figure"),
+    "spire": ("spire", "steeple", "pointed"), "columns": ("column", "colonnade", "portico"),
+    "arch": ("arched", "arches", "archway"), "steps": ("steps", "stairs", "stairway", "staircase"),
+    "neon": ("neon",), "awning": ("awning", "canopy", "marquee"), "lamps": ("globe lamp", "lamps"),
+    "trees": ("tree", "park", "garden", "lawn"), "twin": ("twin",), "flags": ("flag",),
+}
+GOLD, BRONZE, NEON, LION = (212, 175, 55), (140, 100, 50), (255, 60, 90), (222, 214, 196)
+
+
+def details_of(hint: str) -> set[str]:
+    text = hint.lower()
+    return {name for name, words in DETAIL_WORDS.items() if any(w in text for w in words)}
+
+
+def draw_details(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], hint: str) -> None:
+    """Draw on a facade quadrilateral the visible details its description names (lions by the door, a
+    clock, a dome, a statue on top, a spire, columns, an arched door, steps, neon, an awning, globe
+    lamps, trees, twin towers, flags), so a vision agent sees what the text tells."""
+    found = details_of(hint)
+    if not found:
+        return
+    (bx0, by0), (tx0, ty0), (tx1, ty1), (bx1, by1) = quad
+    near_h = by0 - ty0
+    if near_h < 6:
+        return
+
+    def at(t: float, u: float) -> tuple[float, float]:  # t along the facade (0 near), u up (0 ground)
+        bx, by = bx0 + (bx1 - bx0) * t, by0 + (by1 - by0) * t
+        tx, ty = tx0 + (tx1 - tx0) * t, ty0 + (ty1 - ty0) * t
+        return bx + (tx - bx) * u, by + (ty - by) * u
+
+    def height_at(t: float) -> float:
+        return (by0 + (by1 - by0) * t) - (ty0 + (ty1 - ty0) * t)
+
+    mid = 0.5
+    h = height_at(mid)
+    unit = max(2.0, h / 12)  # about one floor
+    if "columns" in found:
+        for k in range(7):
+            t = 0.15 + 0.7 * k / 6
+            draw.line([at(t, 0.02), at(t, 0.45)], fill=(245, 242, 232), width=max(2, int(unit * 0.5)))
+        draw.polygon([at(0.12, 0.45), at(0.88, 0.45), at(mid, 0.58)], fill=(236, 232, 220), outline=(120, 120, 120))
+    if "arch" in found or "lions" in found or "steps" in found:
+        x, y = at(mid, 0.0)
+        draw.rectangle([x - unit * 1.2, y - unit * 2.2, x + unit * 1.2, y], fill=(40, 36, 34))
+        draw.ellipse([x - unit * 1.2, y - unit * 3.4, x + unit * 1.2, y - unit * 1.0], fill=(40, 36, 34))
+    if "steps" in found:
+        x, y = at(mid, 0.0)
+        for k in range(3):
+            draw.rectangle([x - unit * (3 - k * 0.5), y - unit * 0.3 * (k + 1), x + unit * (3 - k * 0.5),
+                            y - unit * 0.3 * k], fill=(214, 208, 196), outline=(150, 146, 138))
+    if "lions" in found:
+        for t in (mid - 0.16, mid + 0.16):  # two couchant lions on plinths either side of the door
+            x, y = at(t, 0.0)
+            s = unit * 0.9
+            draw.rectangle([x - s * 1.6, y - s * 0.8, x + s * 1.6, y], fill=(200, 196, 186))
+            draw.ellipse([x - s * 1.5, y - s * 2.0, x + s * 1.1, y - s * 0.8], fill=LION)
+            draw.ellipse([x + s * 0.4, y - s * 2.6, x + s * 1.6, y - s * 1.3], fill=LION,
+                         outline=(120, 110, 96))  # the head with its mane
+    if "lamps" in found:
+        for t in (0.2, 0.8):
+            x, y = at(t, 0.0)
+            draw.line([(x, y), (x, y - unit * 3)], fill=(30, 60, 40), width=2)
+            draw.ellipse([x - unit * 0.6, y - unit * 3.9, x + unit * 0.6, y - unit * 2.7], fill=(120, 220, 140))
+    if "awning" in found:
+        a, b = at(0.1, 0.2), at(0.9, 0.2)
+        draw.polygon([a, b, (b[0], b[1] + unit), (a[0], a[1] + unit)], fill=(170, 30, 40), outline=(90, 10, 20))
+    if "neon" in found:
+        a, b = at(0.2, 0.7), at(0.8, 0.7)
+        draw.line([a, b], fill=NEON, width=max(2, int(unit * 0.6)))
+        draw.line([at(0.2, 0.78), at(0.8, 0.78)], fill=(80, 220, 255), width=max(2, int(unit * 0.4)))
+    if "clock" in found:
+        x, y = at(mid, 0.8)
+        r = max(3.0, unit * 1.3)
+        draw.ellipse([x - r, y - r, x + r, y + r], fill=(246, 242, 226), outline=GOLD, width=2)
+        draw.line([(x, y), (x, y - r * 0.8)], fill=(20, 20, 20), width=2)
+        draw.line([(x, y), (x + r * 0.55, y)], fill=(20, 20, 20), width=2)
+    if "flags" in found:
+        for t in (0.3, 0.7):
+            x, y = at(t, 0.62)
+            draw.line([(x, y), (x + unit * 2, y - unit)], fill=(60, 60, 60), width=1)
+            draw.rectangle([x + unit * 1.2, y - unit * 1.8, x + unit * 2.4, y - unit * 1.0], fill=(30, 60, 160))
+    top_x, top_y = at(mid, 1.0)
+    if "twin" in found:
+        for t in (0.25, 0.75):
+            x, y = at(t, 1.0)
+            draw.rectangle([x - unit * 1.2, y - unit * 4, x + unit * 1.2, y], fill=(190, 180, 160), outline=(90, 90, 90))
+    if "dome" in found:
+        r = max(4.0, unit * 2.5)
+        draw.pieslice([top_x - r, top_y - r, top_x + r, top_y + r], 180, 360, fill=(110, 150, 130), outline=(60, 80, 70))
+        top_y -= r
+    if "spire" in found:
+        draw.polygon([(top_x - unit, top_y), (top_x + unit, top_y), (top_x, top_y - unit * 6)], fill=(96, 92, 88))
+        top_y -= unit * 6
+    if "statue" in found:
+        draw.rectangle([top_x - unit * 0.5, top_y - unit * 2.2, top_x + unit * 0.5, top_y], fill=BRONZE)
+        draw.ellipse([top_x - unit * 0.45, top_y - unit * 3.0, top_x + unit * 0.45, top_y - unit * 2.1], fill=BRONZE)
+    if "trees" in found:
+        for t in (0.15, 0.45, 0.75):
+            x, y = at(t, 0.0)
+            draw.line([(x, y), (x, y - unit * 2.5)], fill=(90, 60, 40), width=max(2, int(unit * 0.4)))
+            draw.ellipse([x - unit * 1.8, y - unit * 5.5, x + unit * 1.8, y - unit * 2.0], fill=(60, 130, 60))
+
+
+def _sky_and_ground(draw: ImageDraw.ImageDraw, cam: Camera) -> None:
+    h = int(cam.horizon)
+    sky_gradient(draw, cam.width, h, SKY_TOP, SKY, band=4)
+    draw.rectangle([0, h, cam.width, cam.height], fill=SIDEWALK)
+
+
+def _hazed(rgb: tuple[int, int, int]) -> tuple[int, int, int]:
+    """The colour seen through atmospheric haze (a far skyline)."""
+    r, g, b = (int(c * 0.55 + 140 * 0.45) for c in rgb)
+    return r, g, b
+
+
+def _skyline(draw: ImageDraw.ImageDraw, scene: Scene, cam: Camera) -> None:
+    for item in scene.skyline:
+        x = cam.screen_x(item.rel_angle)
+        top = cam.horizon - min(cam.horizon - 4, item.height_m * cam.focal / item.distance_m)
+        half = max(3.0, 40.0 * cam.focal / item.distance_m)
+        key = _style_key(item.style)
+        colour = _hazed(STYLE_PALETTES.get(key, ((150, 160, 172), (0, 0, 0)))[0])
+        if key == "art deco":
+            draw.rectangle([x - half, top + (cam.horizon - top) * 0.25, x + half, cam.horizon], fill=colour)
+            draw.rectangle([x - half * 0.6, top + (cam.horizon - top) * 0.1, x + half * 0.6, cam.horizon], fill=colour)
+            draw.polygon([(x - half * 0.25, top + 8), (x + half * 0.25, top + 8), (x, top)], fill=colour)
+        elif key in ("gothic", "postmodern", "flemish"):
+            draw.rectangle([x - half, top + 6, x + half, cam.horizon], fill=colour)
+            draw.polygon([(x - half, top + 6), (x + half, top + 6), (x, top - 4)], fill=colour)
+        else:
+            draw.rectangle([x - half, top, x + half, cam.horizon], fill=colour)
+
+
+def _side_segments(scene: Scene, side: str, end: float) -> list[tuple[float, float]]:
+    """Depth ranges with buildings on one side, cut where cross streets open."""
+    cuts = sorted(o.distance_m for o in scene.openings if o.side in (side, "both"))
+    segs, start = [], 2.0
+    for d in cuts:
+        if d - 9 > start:
+            segs.append((start, d - 9))
+        start = d + 9
+    if end > start:
+        segs.append((start, end))
+    return segs
+
+
+def _draw_sign(draw: ImageDraw.ImageDraw, cam: Camera, side: str, z: float, text: str, colour: tuple[int, int, int]) -> None:
+    x = FACADE_X_M - 0.1 if side == "right" else -FACADE_X_M + 0.1
+    z0, z1 = max(2.5, z - 6), z + 6
+    p = [cam.project(x, 3.0, z0), cam.project(x, 4.6, z0), cam.project(x, 4.6, z1), cam.project(x, 3.0, z1)]
+    draw.polygon(p, fill=colour, outline=(20, 20, 20))
+    size = int(1.3 * cam.focal / max(z, 3.0))
+    if size >= 7:
+        cx = (p[0][0] + p[3][0]) / 2
+        cy = (p[0][1] + p[1][1] + p[2][1] + p[3][1]) / 4
+        fnt = bundled_font(min(18, size))
+        w = draw.textlength(text, font=fnt)
+        draw.text((cx - w / 2, cy - size / 2), text, font=fnt, fill=(250, 250, 250))
+
+
+def _sign_colour(name: str) -> tuple[int, int, int]:
+    palette = [(176, 30, 36), (20, 110, 60), (30, 70, 150), (120, 40, 120), (200, 120, 20), (30, 30, 30)]
+    return palette[sum(map(ord, name)) % len(palette)]
+
+
+def render(scene: Scene, cam: Camera | None = None) -> Image.Image:
+    cam = cam or STREET_CAMERA
+    rng = random.Random(scene.seed)
+    img = Image.new("RGB", (cam.width, cam.height), SKY)
+    draw = ImageDraw.Draw(img)
+    _sky_and_ground(draw, cam)
+    _skyline(draw, scene, cam)
+    end = scene.ahead_length_m if scene.road_ahead else 16.0
+    end = max(end, 16.0)
+    far = min(end, 240.0)
+    if scene.road_ahead:
+        road = [cam.project(-ROAD_HALF_M, 0, 2.0), cam.project(-ROAD_HALF_M, 0, far), cam.project(ROAD_HALF_M, 0, far),
+                cam.project(ROAD_HALF_M, 0, 2.0)]
+        draw.polygon(road, fill=ROAD)
+        for dash_z in range(4, int(far), 12):  # centre line dashes
+            draw.line([cam.project(0, 0, dash_z), cam.project(0, 0, dash_z + 5)], fill=LANE, width=2)
+        for o in scene.openings:  # cross streets: tarmac reaching out sideways
+            for side in (("left", "right") if o.side == "both" else (o.side,)):
+                sgn = 1 if side == "right" else -1
+                draw.polygon([cam.project(sgn * ROAD_HALF_M, 0, o.distance_m - 6), cam.project(sgn * 60, 0, o.distance_m - 6),
+                              cam.project(sgn * 60, 0, o.distance_m + 6), cam.project(sgn * ROAD_HALF_M, 0, o.distance_m + 6)],
+                             fill=ROAD)
+        if far < AHEAD_END_WALL:
+            _end_wall(draw, cam, far + 12, rng)
+    else:
+        facing = next((f for f in scene.frontages if f.side == "ahead" and f.range_m <= 40), None)
+        _end_wall(draw, cam, 14.0, rng, facing)
+    # Facades, far to near, both sides.
+    landmarks: dict[str, list[Frontage]] = {"left": [], "right": []}
+    for f in scene.frontages:
+        if f.side in landmarks:
+            landmarks[f.side].append(f)
+    pieces: list[tuple[float, str, float, float, Frontage | None]] = []
+    for side in ("left", "right"):
+        for z0, z1 in _side_segments(scene, side, far):
+            z = z0
+            while z < z1:
+                w = min(z1 - z, rng.uniform(12, 26))
+                lm = next((f for f in landmarks[side] if (f.style or details_of(f.hint))
+                           and z - 10 <= f.distance_m <= z + w + 10), None)
+                pieces.append((z, side, z, z + w, lm))
+                z += w
+    for _, side, z0, z1, lm in sorted(pieces, key=lambda p: -p[0]):
+        x = FACADE_X_M if side == "right" else -FACADE_X_M
+        height = rng.uniform(12, 40) if lm is None else min(80.0, max(18.0, (lm.height_m or 30.0)))
+        quad = [cam.project(x, 0, z0), cam.project(x, height, z0), cam.project(x, height, z1), cam.project(x, 0, z1)]
+        draw_facade(draw, quad, lm.style if lm else "", rng, floors=max(3, int(height / 4)))
+        if lm is not None:
+            draw_details(draw, quad, lm.hint)
+    for f in sorted(scene.frontages, key=lambda f: -f.distance_m):
+        if f.sign and f.side in ("left", "right"):
+            _draw_sign(draw, cam, f.side, f.distance_m, f.sign, _sign_colour(f.sign))
+        elif f.sign and f.side == "ahead":
+            _draw_sign(draw, cam, "right", f.distance_m, f.sign, _sign_colour(f.sign))
+    if scene.street_signs:
+        _street_sign(draw, cam, scene.street_signs)
+    return img
+
+
+def _end_wall(draw: ImageDraw.ImageDraw, cam: Camera, z: float, rng: random.Random,
+              facing: Frontage | None = None) -> None:
+    """The building fronts across the end of the view; the place straight ahead, if any, in its style."""
+    quad = [cam.project(-60, 0, z), cam.project(-60, 28, z), cam.project(60, 28, z), cam.project(60, 0, z)]
+    draw_facade(draw, [quad[0], quad[1], quad[2], quad[3]], facing.style if facing else "", rng, floors=7)
+    if facing is not None:
+        front = [cam.project(-14, 0, z), cam.project(-14, 22, z), cam.project(14, 22, z), cam.project(14, 0, z)]
+        draw_details(draw, front, facing.hint)
+
+
+def _street_sign(draw: ImageDraw.ImageDraw, cam: Camera, names: list[str]) -> None:
+    fnt = bundled_font(10)
+    x, y = cam.width - 8, 10
+    draw.line([(x - 4, y), (x - 4, cam.height * 0.9)], fill=(50, 60, 50), width=3)  # the pole
+    for name in names[:3]:
+        w = draw.textlength(name, font=fnt)
+        draw.rectangle([x - w - 12, y, x - 2, y + 14], fill=(18, 110, 58), outline=(240, 240, 240))
+        draw.text((x - w - 7, y + 1), name, font=fnt, fill=(250, 250, 250))
+        y += 17
+
+
+def render_png(scene: Scene, cam: Camera | None = None) -> bytes:
+    return encode_png(render(scene, cam), colours=128)

@@ -1,0 +1,348 @@
+"""Shopping tasks: compare products online (price, size, calories, store distance), order one for pickup,
+get directions, and walk to that very store (or walk first, then order)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ewa_mcp.graders.textnorm import is_number, tokens
+from ..world import get_world
+from ewa_mcp.core.taskmodel import AnswerNumbers, OrderPlaced, ReachedPlace, StartState, StreetStart, Task, TextAnswer, WebStart
+from ewa_mcp.websites.shop import catalog
+from ewa_mcp.taskgen.answer_checks import CALORIES, answer_rule, committed_answer
+from ewa_mcp.taskgen.common import WALK_RULE, call, ref, rng_for, site_url, step_limit_for
+
+PER_TEMPLATE = 60
+MAX_WALK_M = 2200.0
+
+
+def buy_oracle(product: Any, size: str, store: Any) -> list[Any]:
+    return [call("browser_goto", url=site_url("shop", f"/product/{product.id}")),
+            call("browser_type", element=ref("combobox", "Size"), text=size),
+            call("browser_type", element=ref("combobox", "Store"), text=store.name),
+            call("browser_click", element=ref("button", "Add to cart")),
+            call("browser_goto", url=site_url("shop", "/checkout")),
+            call("browser_click", element=ref("button", "Place order"))]
+
+
+def in_stock(product: Any, size: str, store_id: str) -> bool:
+    try:
+        return catalog.stock(product.id, size, store_id) > 0
+    except catalog.CatalogError:  # that store does not sell it
+        return False
+
+
+def first_listed_store(product: Any, size: str, stocked_only: bool = False) -> str | None:
+    """The store the product page lists first (its Store menu's default), optionally among those with stock."""
+    for store in catalog.load_stores():
+        if product.offer(size, store.id) is not None and (not stocked_only or in_stock(product, size, store.id)):
+            return store.id
+    return None
+
+
+def seller_ids(product: Any, size: str) -> list[str]:
+    """Stores that sell this size (in stock or not), in the order the product page lists them."""
+    return [s.id for s in catalog.load_stores() if product.offer(size, s.id) is not None]
+
+
+def slots(out: list[Task]) -> Any:
+    """Task numbers to fill until a template has PER_TEMPLATE tasks; a rejected draw costs a try, not a slot."""
+    for _ in range(PER_TEMPLATE * 100):
+        if len(out) >= PER_TEMPLATE:
+            return
+        yield len(out)
+
+
+class Context:
+    def __init__(self) -> None:
+        self.world = get_world()
+        self.products = [p for p in catalog.load_products() if p.offers]
+        self.stores = {s.id: s for s in catalog.load_stores()}
+        self.store_places = {p.id: p for p in self.world.stores()}
+        # Starting points: Manhattan landmarks and stations within walking range of every store.
+        starts = []
+        for p in sorted(self.world.places.values(), key=lambda p: p.id):
+            if p.city != "manhattan" or p.kind not in ("landmark", "station", "park", "museum"):
+                continue
+            try:
+                dists = [self.world.directions(p.node, s.node).distance_m for s in self.store_places.values()]
+            except ValueError:
+                continue
+            if max(dists) <= MAX_WALK_M:
+                starts.append(p)
+        self.starts = starts
+        self._walks: dict[tuple[Any, str], Any] = {}
+
+    def walk(self, start: Any, store_id: str) -> Any:
+        key = (start.node, store_id)
+        if key not in self._walks:
+            self._walks[key] = self.world.directions(start.node, self.store_places[store_id].node)
+        return self._walks[key]
+
+    def nearest(self, start: Any, store_ids: list[str]) -> str | None:
+        """The nearest on foot of these stores, or None when the two nearest are too close to call (< 100 m)."""
+        ranked = sorted(store_ids, key=lambda sid: self.walk(start, sid).distance_m)
+        if len(ranked) > 1 and self.walk(start, ranked[1]).distance_m - self.walk(start, ranked[0]).distance_m < 100:
+            return None
+        return ranked[0] if ranked else None
+
+    def cheapest_is_decisive(self, start: Any, product: Any, size: str, store_id: str) -> bool:
+        """Ignoring "cheapest" must fail: the cheapest store is neither the nearest seller nor the first listed."""
+        return (store_id != first_listed_store(product, size)
+                and self.nearest(start, seller_ids(product, size)) not in (None, store_id))
+
+
+def _task(ctx: Context, tid: str, intent: str, start: Any, product: Any, size: str, store_id: str,
+          rng: Any, answer: TextAnswer | None = None, walk_first: bool = False,
+          difficulty: str = "medium") -> Task:
+    store = ctx.stores[store_id]
+    place = ctx.store_places[store_id]
+    route = ctx.walk(start, store_id)
+    node = ctx.world.node(place.node)
+    web = [*buy_oracle(product, size, store),
+           call("browser_goto", url=site_url("map", "/directions", **{"from": start.name, "to": store_id}))]
+    walk = [call("street_move", neighbour=n) for n in route.nodes[1:]] + [call("street_stop")]
+    finish = call("finish_episode", **({"answer": answer.must_include[0]} if answer else {}))
+    if walk_first:
+        oracle = [call("browser_goto", url=site_url("map", "/directions", **{"from": start.name, "to": store_id})),
+                  call("switch_environment", target="embodied", message="walk to the store"), *walk,
+                  call("switch_environment", target="web", message="order for pickup"),
+                  *buy_oracle(product, size, store), finish]
+    else:
+        oracle = [*web, call("switch_environment", target="embodied", message="walk to the pickup store"), *walk,
+                  finish]
+    links = ctx.world.neighbours(start.node)
+    return Task(
+        id=tid, domain="shopping", difficulty=difficulty, intent=intent,
+        start=StartState(environment="embodied" if walk_first else "web", web=WebStart(start_url="shop:/"),
+                         embodied=StreetStart(city="manhattan", node=start.node,
+                                              heading=round(rng.choice([lk.heading for lk in links]), 1))),
+        web_goals=[OrderPlaced(product_id=product.id, size=size, quantity=1, store_id=store_id)],
+        embodied_goals=[ReachedPlace(city="manhattan", node=place.node, lat=node.lat, lng=node.lng,
+                                     place_id=store_id, must_match_order_store=True)],
+        answer=answer,
+        step_limit=step_limit_for(len(oracle), slack=30),
+        oracle=oracle,
+        metadata={"store_nodes": {sid: p.node for sid, p in ctx.store_places.items()},
+                  "shortest_path_m": route.distance_m, "start_lat": ctx.world.node(start.node).lat,
+                  "start_lng": ctx.world.node(start.node).lng, "product_id": product.id, "size": size,
+                  "store_id": store_id, "walk_first": walk_first},
+    )
+
+
+# Other ways of writing a size unit, accepted in answers ("1 litre" for "1 L").
+UNIT_WORDS = {"l": ["litre", "liter", "litres", "liters"], "oz": ["ounce", "ounces"], "fl oz": ["fluid ounces"],
+              "lb": ["pound", "pounds"], "gal": ["gallon", "gallons"], "qt": ["quart", "quarts"],
+              "pt": ["pint", "pints"], "ct": ["count"], "ml": ["millilitres", "milliliters"], "g": ["grams"]}
+
+
+def size_unit(label: str) -> str | None:
+    """The unit written after a size label's last number: "oz" in "24 oz loaf", "fl oz" in "33.8 fl oz"."""
+    toks = tokens(label)
+    numbers = [i for i, t in enumerate(toks) if is_number(t)]
+    if not numbers or numbers[-1] + 1 >= len(toks):
+        return None
+    unit = toks[numbers[-1] + 1: numbers[-1] + 3]
+    return " ".join(unit) if unit[0] in ("fl", "sq") and len(unit) == 2 else unit[0]
+
+
+def size_answer(product: Any, label: str, context: list[str]) -> TextAnswer:
+    """The size asked for, told apart from the product's other sizes and any other amount in its unit."""
+    unit = size_unit(label)
+    toks = tokens(label)
+    aliases: list[str] = []
+    units: list[str] = []
+    if unit is not None:
+        units = [unit, *UNIT_WORDS.get(unit, [])]
+        at = next(i for i in range(len(toks)) if " ".join(toks[i:i + len(unit.split())]) == unit and i > 0
+                  and is_number(toks[i - 1]))
+        quantity = toks[:at]
+        aliases = [" ".join([*quantity, u]) for u in units]
+    return committed_answer(label, [s.label for s in product.sizes if s.label != label], aliases=aliases,
+                            context=[product.name, *context],
+                            numbers=AnswerNumbers(units=units, bare=False) if units else None)
+
+
+def cheapest_tasks(ctx: Context) -> list[Task]:
+    out: list[Task] = []
+    rng = rng_for("shopping", "cheapest")
+    for n in slots(out):
+        product = rng.choice(ctx.products)
+        size = rng.choice(product.sizes).label
+        store_id = catalog.cheapest_store(product.id, size)
+        start = rng.choice(ctx.starts)
+        if not in_stock(product, size, store_id) or not ctx.cheapest_is_decisive(start, product, size, store_id):
+            continue
+        walk_first = n % 4 == 3
+        intent = (f"Buy me {product.name} ({size}) for pickup at the store that sells it cheapest, "
+                  f"then walk there from {start.name} to pick it up. {WALK_RULE}") if not walk_first else (
+                  f"Walk from {start.name} to the store that sells {product.name} ({size}) cheapest, "
+                  f"and order it online for pickup there once you have arrived. {WALK_RULE}")
+        out.append(_task(ctx, f"shopping-cheapest-{n:03d}", intent, start, product, size, store_id, rng,
+                         walk_first=walk_first, difficulty="easy"))
+    return out
+
+
+def _amount(size: Any) -> int:
+    """A size's grams or millilitres (the sizes compared here have one of them)."""
+    return int(size.grams or size.ml or 0)
+
+
+def _nutrition(product: Any) -> Any:
+    """A food's nutrition (the products compared here have it)."""
+    assert product.nutrition is not None
+    return product.nutrition
+
+
+def size_tasks(ctx: Context) -> list[Task]:
+    out: list[Task] = []
+    rng = rng_for("shopping", "size")
+    candidates = [p for p in ctx.products if len([s for s in p.sizes if s.grams or s.ml]) >= 2]
+    for n in slots(out):
+        product = rng.choice(candidates)
+        sizes = sorted([s for s in product.sizes if s.grams or s.ml], key=_amount)
+        target = sizes[rng.randrange(1, len(sizes))]
+        below = sizes[sizes.index(target) - 1]
+        amount = _amount(below) + max(1, (_amount(target) - _amount(below)) // 2)
+        unit = "g" if target.grams else "ml"
+        store_id = catalog.cheapest_store(product.id, target.label)
+        start = rng.choice(ctx.starts)
+        # Each stated constraint decides: the size that is enough is not the first listed one (the smallest is
+        # never enough), and its cheapest store is neither the nearest seller nor the first listed.
+        if (not in_stock(product, target.label, store_id) or target.label == product.sizes[0].label
+                or not ctx.cheapest_is_decisive(start, product, target.label, store_id)):
+            continue
+        intent = (f"What size of {product.name} should I buy if I need at least {amount} {unit}? Buy the smallest "
+                  f"size that is enough, at the store where that size is cheapest, then walk there from "
+                  f"{start.name}. {WALK_RULE} Tell me the size. "
+                  + answer_rule("Answer with the size as the shop labels it."))
+        if any(t.intent == intent for t in out):
+            continue  # the same question twice
+        task = _task(ctx, f"shopping-size-{n:03d}", intent, start, product, target.label, store_id, rng,
+                     answer=size_answer(product, target.label, [f"{amount} {unit}"]))
+        task.metadata["need"] = {"amount": amount, "unit": unit}
+        out.append(task)
+    return out
+
+
+def calorie_tasks(ctx: Context) -> list[Task]:
+    out: list[Task] = []
+    rng = rng_for("shopping", "calories")
+    foods = [p for p in ctx.products if p.nutrition is not None]
+    for n in slots(out):
+        low, high = rng.sample(foods, 2)
+        if _nutrition(low).calories == _nutrition(high).calories:
+            continue
+        if _nutrition(low).calories > _nutrition(high).calories:
+            low, high = high, low
+        # The lower product is named first in half the tasks and second in the other half, so neither
+        # "the first one" nor "the second one" answers without reading the calories.
+        a, b = (low, high) if n % 2 == 0 else (high, low)
+        size = low.sizes[0].label  # not named in the intent: it would tell which product is lower
+        start = rng.choice(ctx.starts)
+        # The named store decides too: it is not the store an agent ignoring the name would pick (the
+        # nearest seller, the first listed, the cheapest for that size).
+        sellers = seller_ids(low, size)
+        ignored = {ctx.nearest(start, sellers), first_listed_store(low, size), catalog.cheapest_store(low.id, size)}
+        stocked = [sid for sid in sellers if in_stock(low, size, sid) and sid not in ignored]
+        if not stocked or None in ignored:
+            continue
+        store_id = rng.choice(stocked)
+        intent = (f"How many calories are in {a.name} and {b.name} per serving? I need to select the lower one: "
+                  f"order it, in the first size the shop lists for it, for pickup at {ctx.stores[store_id].name}, "
+                  f"walk there from {start.name}, and tell me its calories per serving. {WALK_RULE} "
+                  + answer_rule("Answer with that number of calories."))
+        check = committed_answer(str(_nutrition(low).calories), [high.name, str(_nutrition(high).calories)],
+                                 context=[low.name, *(s.label for s in low.sizes), _nutrition(low).serving_size],
+                                 numbers=CALORIES)
+        if any(t.intent == intent for t in out):
+            continue  # the same question twice
+        task = _task(ctx, f"shopping-calories-{n:03d}", intent, start, low, size, store_id, rng, answer=check)
+        task.metadata["named_products"] = [a.id, b.id]
+        out.append(task)
+    return out
+
+
+def nearest_tasks(ctx: Context) -> list[Task]:
+    out: list[Task] = []
+    rng = rng_for("shopping", "nearest")
+    sold_out = [(p, o.size) for p in ctx.products for o in p.offers if o.stock == 0
+                and any(q.size == o.size and q.stock > 0 for q in p.offers)]
+    seen: set[tuple[str, str, str]] = set()
+    for n in slots(out):
+        # "that has it in stock" must decide: the nearest store selling this size has none on the shelf.
+        product, size = rng.choice(sold_out)
+        start = rng.choice(ctx.starts)
+        if (product.id, size, start.id) in seen:
+            continue  # few product sizes are sold out somewhere: do not ask the same thing twice
+        seen.add((product.id, size, start.id))
+        sellers = seller_ids(product, size)
+        stocked = [sid for sid in sellers if in_stock(product, size, sid)]
+        nearest_seller, store_id = ctx.nearest(start, sellers), ctx.nearest(start, stocked)
+        if nearest_seller is None or store_id is None or in_stock(product, size, nearest_seller):
+            continue  # too close to call, or the nearest seller has stock
+        # "closest to me" must decide too: the answer is not the first listed or the cheapest store in stock.
+        if store_id in (first_listed_store(product, size, stocked_only=True), catalog.cheapest_store(product.id, size)):
+            continue
+        intent = (f"I am at {start.name}. Buy me {product.name} ({size}) for pickup at the store closest to me "
+                  f"on foot that has it in stock, then walk there. {WALK_RULE}")
+        out.append(_task(ctx, f"shopping-nearest-{n:03d}", intent, start, product, size, store_id, rng))
+    return out
+
+
+def pair_tasks(ctx: Context) -> list[Task]:
+    """Hard: two products, each cheapest at a different store: two orders (one per pickup store, several
+    rounds of product page, cart and checkout), then a walk to whichever of the two stores is nearer."""
+    out: list[Task] = []
+    rng = rng_for("shopping", "pair")
+    for n in slots(out):
+        a, b = rng.sample(ctx.products, 2)
+        size_a, size_b = rng.choice(a.sizes).label, rng.choice(b.sizes).label
+        store_a, store_b = catalog.cheapest_store(a.id, size_a), catalog.cheapest_store(b.id, size_b)
+        if store_a == store_b or not in_stock(a, size_a, store_a) or not in_stock(b, size_b, store_b):
+            continue
+        start = rng.choice(ctx.starts)
+        if not (ctx.cheapest_is_decisive(start, a, size_a, store_a) and ctx.cheapest_is_decisive(start, b, size_b, store_b)):
+            continue
+        walks = {sid: ctx.walk(start, sid) for sid in (store_a, store_b)}
+        near = ctx.nearest(start, [store_a, store_b])
+        if near is None:
+            continue  # too close to call: which store is nearer must be unambiguous
+        # "nearer" decides: the walk ends at the first product's store in half the tasks, the second's in the
+        # other half; and "of those two" decides: the nearer of the two is not the nearest store of all.
+        if near != (store_a if n % 2 == 0 else store_b) or ctx.nearest(start, list(ctx.stores)) in (None, near):
+            continue
+        route, place = walks[near], ctx.store_places[near]
+        node = ctx.world.node(place.node)
+        intent = (f"Buy me {a.name} ({size_a}) and {b.name} ({size_b}), each for pickup at the store that sells "
+                  "that item cheapest (one order per store). Then walk from "
+                  f"{start.name} to whichever of those two stores is nearer on foot. {WALK_RULE}")
+        oracle = [*buy_oracle(a, size_a, ctx.stores[store_a]), *buy_oracle(b, size_b, ctx.stores[store_b]),
+                  call("browser_goto", url=site_url("map", "/directions", **{"from": start.name, "to": store_a})),
+                  call("browser_goto", url=site_url("map", "/directions", **{"from": start.name, "to": store_b})),
+                  call("switch_environment", target="embodied", message="walk to the nearer pickup store"),
+                  *[call("street_move", neighbour=x) for x in route.nodes[1:]], call("street_stop"),
+                  call("finish_episode")]
+        links = ctx.world.neighbours(start.node)
+        out.append(Task(
+            id=f"shopping-pair-{n:03d}", domain="shopping", difficulty="hard", intent=intent,
+            start=StartState(environment="web", web=WebStart(start_url="shop:/"),
+                             embodied=StreetStart(city="manhattan", node=start.node,
+                                                  heading=round(rng.choice([lk.heading for lk in links]), 1))),
+            web_goals=[OrderPlaced(product_id=a.id, size=size_a, quantity=1, store_id=store_a),
+                       OrderPlaced(product_id=b.id, size=size_b, quantity=1, store_id=store_b)],
+            embodied_goals=[ReachedPlace(city="manhattan", node=place.node, lat=node.lat, lng=node.lng,
+                                         place_id=near)],
+            step_limit=step_limit_for(len(oracle), slack=40),
+            oracle=oracle,
+            metadata={"store_nodes": {sid: p.node for sid, p in ctx.store_places.items()},
+                      "shortest_path_m": route.distance_m, "start_lat": ctx.world.node(start.node).lat,
+                      "start_lng": ctx.world.node(start.node).lng, "products": [a.id, b.id],
+                      "sizes": [size_a, size_b], "stores": [store_a, store_b], "nearer_store": near},
+        ))
+    return out
+
+
+def generate() -> list[Task]:
+    ctx = Context()
+    return cheapest_tasks(ctx) + size_tasks(ctx) + calorie_tasks(ctx) + nearest_tasks(ctx) + pair_tasks(ctx)

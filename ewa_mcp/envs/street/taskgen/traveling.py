@@ -1,0 +1,216 @@
+"""Traveling tasks: walk to a landmark described by its look and address (never its name), identify it,
+look it up on the wiki, and answer a question whose answer is in the wiki."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from functools import lru_cache
+
+from ewa_mcp.graders.textnorm import contains_phrase, tokens
+from ..world import get_world
+from ewa_mcp.core.taskmodel import PageVisited, ReachedPlace, StartState, StreetStart, Task, WebStart
+from ewa_mcp.websites.wiki import store as wiki
+from ewa_mcp.taskgen.answer_checks import METRES, YEARS, answer_rule, committed_answer
+from ewa_mcp.taskgen.common import WALK_RULE, call, rng_for, site_url, step_limit_for
+
+TARGET = 130
+HARD_TARGET = 30  # landmarks described only by their look (>= 15 % of the domain)
+MIN_M, MAX_M = 200.0, 1000.0
+HARD_MAX_M = 600.0  # the agent searches by sight, so the landmark is nearer
+QUESTIONS = {
+    "year_built": ("In what year was it built?", lambda v: str(v)),
+    "architect": ("Who was its architect?", lambda v: str(v)),
+    "architectural_style": ("What is its architectural style?", lambda v: str(v)),
+    "height_m": ("How tall is it, in metres?", lambda v: f"{float(v):g}"),
+    "opening_hours": ("When is it open?", lambda v: str(v)),
+}
+# The form each answer takes, said in the intent.
+FORMS = {
+    "year_built": "Answer with the year only.",
+    "architect": "Answer with the architect's name as the wiki gives it.",
+    "architectural_style": "Answer with the style's name only.",
+    "height_m": "Answer with the height in metres (a number).",
+    "opening_hours": "Answer with the opening hours as the wiki gives them.",
+}
+NUMBERS = {"year_built": YEARS, "height_m": METRES}
+# The wiki infobox row that holds each fact, for the vocabulary of every attribute.
+INFOBOX = {"year_built": "Year built", "architect": "Architect", "architectural_style": "Architectural style",
+           "height_m": "Height", "opening_hours": "Opening hours"}
+
+
+def article_text(article: Any) -> str:
+    return " ".join([article.title, *article.infobox.values(), wiki.plain_text(article.body)])
+
+
+def _fact_text(key: str, value: Any) -> str:
+    if key == "height_m":
+        number = str(value).split()[0] if str(value).split() else ""
+        try:
+            return f"{float(number):g}"
+        except ValueError:
+            return str(value)
+    return wiki.plain_text(str(value)).strip()
+
+
+@lru_cache(maxsize=None)
+def vocabulary(key: str) -> tuple[str, ...]:
+    """Every value the attribute takes across the world's places and the wiki's infoboxes, sorted: the
+    candidates an answer about one landmark must be told apart from."""
+    world = get_world()
+    values = {_fact_text(key, p.facts[key]) for p in world.places.values() if key in p.facts}
+    values |= {_fact_text(key, a.infobox[INFOBOX[key]]) for a in wiki.load_articles() if INFOBOX[key] in a.infobox}
+    if key == "architect":  # and every architect the wiki has an article about
+        values |= {a.title for a in wiki.load_articles() if a.group == "architects"}
+    return tuple(sorted(v for v in values if v))
+
+
+def answer_check(key: str, answer: str) -> Any:
+    """The committed-answer check of one question, or None when no short answer can be told apart from
+    the other candidates (a value such as "Modernism (green skyscraper)" whose plain form, "Modernism",
+    is itself another candidate)."""
+    others = [v for v in vocabulary(key) if tokens(v) != tokens(answer)]
+    other_keys = {tuple(tokens(v)) for v in others}
+    aliases: list[str] = []
+    base = answer.split("(")[0].strip(" ,;:")
+    if base != answer:
+        if tuple(tokens(base)) in other_keys:
+            return None
+        aliases.append(base)
+        if key == "architect":
+            aliases.append(answer[answer.index("(") + 1:].rstrip(")").strip())
+    if key == "architect":
+        article = wiki.find(base)
+        if article is not None and article.group == "architects":
+            aliases += [article.title, *article.aliases]
+    aliases = [a for a in aliases if tuple(tokens(a)) not in other_keys]
+    return committed_answer(answer, others, aliases=aliases, numbers=NUMBERS.get(key))
+
+
+def start_place(world: Any, target: Any, rng: Any, max_m: float = MAX_M) -> tuple[Any, Any] | None:
+    """A nearby street corner to start from, MIN_M..max_m away on foot."""
+    graph = world.city(target.city)
+    ids = sorted(graph.ids)
+    for _ in range(60):
+        node_id = rng.choice(ids)
+        node = world.node(node_id)
+        if len(node.streets) < 2:
+            continue
+        try:
+            route = world.directions(node_id, target.node)
+        except ValueError:
+            continue
+        if MIN_M <= route.distance_m <= max_m:
+            return world.place(node_id), route
+    return None
+
+
+def landmark_task(world: Any, tid: str, target: Any, article: Any, question_key: str, start: Any, route: Any,
+                  trng: Any, hard: bool) -> Task:
+    """One task: walk to the landmark, look it up, answer. A hard task describes the landmark only by its
+    look (no address, no name), so the agent must match the description to what it sees on the street."""
+    question, answer = QUESTIONS[question_key][0], QUESTIONS[question_key][1](target.facts[question_key])
+    corner = start.name.replace(" & ", " and ")
+    if hard:
+        intent = (f"You are at the corner of {corner}. Within about {int(round(route.distance_m, -2)) or 100} m "
+                  f"on foot stands a landmark you will know only by its look: {target.description_hint} "
+                  "No address or name is given: find it by what you see in the street views. "
+                  f"{WALK_RULE} When you are there, look it up on the wiki and answer: {question} "
+                  + answer_rule(FORMS[question_key]))
+    else:
+        intent = (f"You are at the corner of {corner}. Walk to {target.address}: {target.description_hint} "
+                  f"{WALK_RULE} When you are there, look it up on the wiki and answer: {question} "
+                  + answer_rule(FORMS[question_key]))
+    end = world.node(target.node)
+    oracle = [
+        call("browser_goto", url=site_url("map", "/directions", **{"from": start.id, "to": target.id})),
+        call("switch_environment", target="embodied", message="walk to the landmark"),
+        *[call("street_move", neighbour=n) for n in route.nodes[1:]], call("street_stop"),
+        call("switch_environment", target="web", message="look it up"),
+        call("browser_goto", url=site_url("wiki", f"/wiki/{article.slug}")),
+        call("finish_episode", answer=answer),
+    ]
+    links = world.neighbours(start.node)
+    return Task(
+        id=tid,
+        domain="traveling",
+        difficulty="hard" if hard else "medium",
+        intent=intent,
+        start=StartState(environment="web", web=WebStart(start_url="map:/"),
+                         embodied=StreetStart(city=target.city, node=start.node,
+                                              heading=round(trng.choice([lk.heading for lk in links]), 1))),
+        web_goals=[PageVisited(site="wiki", path_prefix=f"/wiki/{article.slug}")],
+        embodied_goals=[ReachedPlace(city=target.city, node=target.node, lat=end.lat, lng=end.lng,
+                                     place_id=target.id)],
+        answer=answer_check(question_key, answer),
+        step_limit=step_limit_for(len(oracle), slack=60 if hard else 30),
+        oracle=oracle,
+        metadata={"poi_id": target.id, "article": article.slug, "question": question_key,
+                  "shortest_path_m": route.distance_m, "start_lat": world.node(start.node).lat,
+                  "start_lng": world.node(start.node).lng, "visual_only": hard},
+    )
+
+
+def answerable_questions(target: Any, article: Any) -> list[str]:
+    """The fact keys whose answer the article states and a short answer can single out."""
+    text = article_text(article)
+    return [k for k, v in sorted(target.facts.items())
+            if k in QUESTIONS and contains_phrase(text, QUESTIONS[k][1](v))
+            and answer_check(k, QUESTIONS[k][1](v)) is not None]
+
+
+def landmarks_of(world: Any) -> list[Any]:
+    return sorted((p for p in world.places.values() if p.description_hint and p.kind not in
+                   ("store", "restaurant", "intersection", "address", "station")), key=lambda p: p.id)
+
+
+def generate() -> list[Task]:
+    world = get_world()
+    tasks: list[Task] = []
+    landmarks = landmarks_of(world)
+    rng = rng_for("traveling")
+    rng.shuffle(landmarks)
+    rounds = 0
+    while len(tasks) < TARGET and rounds < 3:
+        for target in landmarks:
+            if len(tasks) >= TARGET:
+                break
+            article = wiki.by_poi_id(target.id)
+            if article is None:
+                continue
+            answerable = answerable_questions(target, article)
+            if len(answerable) <= rounds:
+                continue  # validation: the answer must be in our wiki, and a short answer must single it out
+            trng = rng_for("traveling", target.id, rounds)
+            found = start_place(world, target, trng)
+            if found is None:
+                continue
+            tasks.append(landmark_task(world, f"traveling-{target.city}-{len(tasks):03d}", target, article,
+                                       answerable[rounds], *found, trng, hard=False))
+        rounds += 1
+    return tasks + hard_tasks(world)
+
+
+def hard_tasks(world: Any) -> list[Task]:
+    """Landmarks described only by their look: one per landmark whose look no other landmark shares."""
+    tasks: list[Task] = []
+    landmarks = landmarks_of(world)
+    hints = [p.description_hint for p in landmarks]
+    rng = rng_for("traveling", "hard")
+    rng.shuffle(landmarks)
+    for target in landmarks:
+        if len(tasks) >= HARD_TARGET:
+            break
+        article = wiki.by_poi_id(target.id)
+        if article is None or hints.count(target.description_hint) > 1:
+            continue
+        answerable = answerable_questions(target, article)
+        if not answerable:
+            continue
+        trng = rng_for("traveling", "hard", target.id)
+        found = start_place(world, target, trng, max_m=HARD_MAX_M)
+        if found is None:
+            continue
+        tasks.append(landmark_task(world, f"traveling-hard-{target.city}-{len(tasks):03d}", target, article,
+                                   trng.choice(answerable), *found, trng, hard=True))
+    return tasks

@@ -1,1 +1,0 @@
-"""Geolocation domain: locations, standpoint graphs, rendered views, the environment, task and wiki generators."""

@@ -1,1 +1,0 @@
-"""MCP tool groups: one module per group, each with ``register(mcp, episodes)``."""
