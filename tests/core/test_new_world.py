@@ -52,7 +52,7 @@ def run(cmd: list[str], cwd: Path, **env: str) -> subprocess.CompletedProcess:
 
 def test_the_documented_files_are_the_lamp_worlds():
     on_disk = sorted(str(p.relative_to(LAMP)) for p in LAMP.rglob("*") if p.is_file() and "__pycache__" not in p.parts)
-    documented = [f.replace("<domain>", "lighting") for f in documented_files()]
+    documented = sorted(f.replace("<domain>", "lighting") for f in documented_files())
     assert on_disk == documented
 
 

@@ -15,6 +15,7 @@ if TYPE_CHECKING:  # imported on first use: the server starts without loading st
 # The move labels street_observe lists; kept equal to env.Direction (tests/outdoor/test_mcp.py), declared here
 # so the server starts without importing the street environment.
 Direction = Literal["forward", "forward-right", "right", "back-right", "back", "back-left", "left", "forward-left"]
+Frame = Literal["relative", "absolute"]
 
 
 def street(env: Any) -> StreetEnvironment:
@@ -26,7 +27,7 @@ def street(env: Any) -> StreetEnvironment:
     return env
 
 
-async def _observe(env: Any, frame: str) -> Observation:
+async def _observe(env: Any, frame: Frame) -> Observation:
     return street(env).observation(frame)
 
 
@@ -46,7 +47,7 @@ ACTIONS = [
         "here, and a description of four views (front/right/back/left, or north/east/south/west with "
         "frame='absolute'); distances are from where you stand now. View images too when the episode's observation "
         "option is vision or both. Says 'Walk stopped at ...' once the walk is over. Counts as a step, like every call.",
-        _observe, {"frame": Param(Literal["relative", "absolute"], "relative")}),
+        _observe, {"frame": Param(Frame, "relative")}),
     ToolAction(
         "street_move", "Walk to a neighbouring node", "act",
         "Walk to a neighbouring node: direction = one of the labels street_observe lists here (forward, "
