@@ -78,7 +78,7 @@ def build_server(config: ServerConfig | None = None) -> tuple[MCPServer, Episode
     Raises ``SettingsError`` (naming the variable and the fix) when an EWA_* variable is invalid."""
     config = config or ServerConfig()
     settings = config.resolved_settings()
-    tasks = TaskStore(task_dirs(settings))
+    tasks = TaskStore(task_dirs(settings), on_error=lambda err: log.warning("skipped a task file: %s", err))
     # Imported task directories carry their street graphs in a streets/ folder (ewa-mcp tasks import-ewa).
     streets = [Path(d) / "streets" for d in tasks.roots if (Path(d) / "streets").is_dir()]
     if streets:

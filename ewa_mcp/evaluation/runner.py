@@ -212,9 +212,9 @@ async def run_eval(tasks: list[Task], agent: Any, *, transport: str = "inprocess
 
 
 def task_dirs_from(given: list[str] | None) -> list[Path]:
-    from ..paths import tasks_dir
+    from ..paths import task_dirs
 
-    return [Path(p) for p in given] if given else [tasks_dir()]
+    return [Path(p) for p in given] if given else task_dirs()  # every directory of EWA_TASKS_DIR=a:b
 
 
 def run_dir_from(given: str | None, prefix: str = "") -> Path:
