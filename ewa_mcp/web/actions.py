@@ -82,7 +82,7 @@ class BrowserActions:
         for note in await tab.activity.navigation(mark, deadline):
             s.notice(note)
         if s.blocked_nav is not None:
-            await self._refuse_navigation(action_name, tab)
+            await self._refuse_navigation(action_name, tab, deadline)
         # The page is asked whether this action's work is done; its answer brings the page facts
         # and the DOM-change counter (settle.py), read when it answers, so that the snapshot taken
         # next is known to be at least that new. Most actions leave nothing running: one round trip.
@@ -105,9 +105,13 @@ class BrowserActions:
             collected = await collect(s, tab, want_image, known=(answer[0], answer[1], answered_generation))
         return await present(s, current, collected)
 
-    async def _refuse_navigation(self, action_name: str, tab: Tab) -> None:
+    async def _refuse_navigation(self, action_name: str, tab: Tab, deadline: float) -> None:
         s = self.session
         url, s.blocked_nav = s.blocked_nav or "", None
+        # The refused request fails at once, but Chromium commits its error page for it a little later (a
+        # form's POST, or any navigation on a busy machine, after the action has settled): wait for that
+        # commit, so the tab is stepped back from the error page rather than left on it.
+        await self._error_page_committed(s.current(), deadline)
         s.notices = [n for n in s.notices if url[:120] not in n]
         current = s.current()
         if current is not tab and (current.page.url in ("about:blank", "")
@@ -131,6 +135,18 @@ class BrowserActions:
         raise EnvError(f"{action_name} led to {url[:200]}, which is refused: only the embedded sites are "
                        f"reachable ({s.policy.describe_allowed() if s.policy else ''}); the page is "
                        "unchanged")
+
+    @staticmethod
+    async def _error_page_committed(tab: Tab, deadline: float) -> None:
+        page = tab.page
+        if page.is_closed() or page.url.startswith("chrome-error:"):
+            return
+        try:
+            await page.wait_for_event(
+                "framenavigated", predicate=lambda frame: frame == page.main_frame and frame.url.startswith(
+                    "chrome-error:"), timeout=max(500.0, (deadline - time.monotonic()) * 1000))
+        except PlaywrightError:
+            pass  # no error page came (the navigation was cancelled, or replaced by another): nothing to undo
 
     # ------------------------------------------------------------ element actions
     async def click(self, element: str) -> Observation:
