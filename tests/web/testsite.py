@@ -115,6 +115,17 @@ document.getElementById('ping').addEventListener('click', () => fetch('/api/clic
     async def redirect_out(request: Request) -> Response:
         return RedirectResponse("http://example.com/landing", status_code=302)
 
+    async def busy(request: Request) -> Response:
+        # A click that takes effect at once, then a page too busy to answer for ?ms= milliseconds (what a
+        # loaded machine looks like from the server): after the click (?when=after) or in its handler.
+        ms = int(request.query_params.get("ms", "4000"))
+        when = request.query_params.get("when", "after")
+        spin = f"const end = Date.now() + {ms}; while (Date.now() < end) {{}}"
+        work = f"setTimeout(() => {{ {spin} }}, 0);" if when == "after" else spin
+        return _page("Busy page", f"""<h1>Busy page</h1><p id='state'>Not clicked</p>
+<button onclick="document.getElementById('state').textContent = 'Clicked once'; document.title = 'Busy page (clicked)';
+{html.escape(work)}">Start work</button>""")
+
     async def webrtc(request: Request) -> Response:
         # A hostile page on an allowed origin: it tries to send UDP to a local port by WebRTC, both as
         # a STUN/TURN server (ICE gathering) and as a remote candidate (connectivity checks), and
@@ -156,6 +167,7 @@ document.getElementById('ping').addEventListener('click', () => fetch('/api/clic
         Route("/", index), Route("/item/{n:int}", item), Route("/search", search), Route("/counter", counter),
         Route("/api/click", api_click, methods=["POST"]), Route("/long", long_page), Route("/download", download),
         Route("/redirect-out", redirect_out), Route("/offsite", offsite), Route("/webrtc", webrtc),
+        Route("/busy", busy),
     ])
 
 
