@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import importlib
 import logging
+import uuid
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 from dataclasses import dataclass
@@ -91,15 +92,25 @@ def build_server(config: ServerConfig | None = None) -> tuple[MCPServer, Episode
     # The embedded sites report per-episode events (orders, page views) through this sink.
     services.emit_event = episodes.emit_event
 
+    connected = 0
+
     @asynccontextmanager
-    async def lifespan(_: MCPServer) -> AsyncIterator[None]:
-        # Only shutdown matters here: the tools reach the episode manager through register(), so the
-        # lifespan context carries nothing. Stopping the server ends open episodes and the browser.
+    async def lifespan(_: MCPServer) -> AsyncIterator[dict[str, str]]:
+        # The tools reach the episode manager through register(); the lifespan state names the connection (the
+        # per-client cap's client: tools/core.client_key). The SDK enters it once per server for HTTP, once per
+        # connection in-process and over stdio: the episodes belong to the server, so they (and the browser)
+        # end only when the last connection leaves, never when one client of several does.
+        nonlocal connected
+        connected += 1
+        if connected == 1:
+            episodes.start_reaper()
         try:
-            yield
+            yield {"connection": f"connection-{uuid.uuid4().hex[:12]}"}
         finally:
-            await episodes.aclose()
-            await services.aclose()
+            connected -= 1
+            if connected == 0:
+                await episodes.aclose()
+                await services.aclose()
 
     mcp = EpisodeServer("ewa-mcp", instructions=INSTRUCTIONS, version=__version__, lifespan=lifespan)
     mcp.episodes = episodes

@@ -46,6 +46,9 @@ FIXES: dict[str, str] = {
                "EWA_BROWSER__<OPTION> (EWA_BROWSER__HEADLESS=false)",
     "site_ports": 'a JSON object of site name -> port, e.g. {"shop": 9001}',
     "allowed_hosts": "host names or addresses separated by commas, e.g. ewa.example.org,10.0.0.5",
+    "max_episodes": "a whole number of episodes, 0 for no cap",
+    "max_episodes_per_client": "a whole number of episodes, 0 for no cap",
+    "episode_idle_s": "a number of seconds, 0 to never end idle episodes",
 }
 
 PathList = Annotated[list[Path], NoDecode]  # "dir1:dir2" (os.pathsep), not JSON
@@ -82,6 +85,13 @@ class Settings(BaseSettings):
     allowed_hosts: HostList = Field(default_factory=list, description="more Host names the HTTP server answers "
                                     "to (comma-separated), e.g. a DNS name or proxy in front of it")
     verbose: bool = False
+
+    # -- admission: what the server holds open at once (ewa_mcp/episodes.py)
+    max_episodes: int = Field(256, ge=0, description="open episodes the server admits at once (0: no cap)")
+    max_episodes_per_client: int = Field(0, ge=0, description="open episodes one MCP session may hold at once "
+                                         "(0: no cap)")
+    episode_idle_s: float = Field(1800.0, ge=0, description="an episode with no call for this long is ended as "
+                                  "aborted and its environments released (0: never)")
 
     # -- environments
     chromium: str | None = Field(None, description="the Chromium/Chrome executable (default: discovered)")

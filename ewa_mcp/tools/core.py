@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 from typing import Annotated, Any, Literal
 
-from mcp.server.mcpserver import MCPServer
+from mcp.server.mcpserver import Context, MCPServer
 from mcp.server.mcpserver.exceptions import ResourceError
 from mcp_types import CallToolResult
 from pydantic import BaseModel, Field
@@ -62,6 +62,10 @@ class EpisodeStatus(BaseModel):
     walk_stopped: bool | None = Field(
         default=None, description="tasks with a walk: whether street_stop ended it; null when there is no walk")
     answer: str | None
+    server: dict[str, Any] | None = Field(
+        default=None, description="the server's admission rules: open_episodes, max_episodes, "
+        "max_episodes_per_client, idle_timeout_s (an episode with no call for this long is ended as aborted), "
+        "reaped_idle")
 
 
 def public_task(task: Any) -> dict[str, Any]:
@@ -90,6 +94,25 @@ async def _observe(episode: Any) -> Observation:
     if env is None:
         return Observation(text="(this episode has no environment to observe)")
     return await env.observe()
+
+
+def client_key(ctx: Context | None) -> str | None:
+    """The client a call came from (the per-client cap counts its episodes). The 2026 protocol has no sessions,
+    so this is the transport's: an in-process or stdio connection, or over HTTP the Mcp-Session-Id of a client
+    that keeps a session (2025 protocols). Sessionless HTTP requests have none: only the server's cap counts
+    them."""
+    if ctx is None:
+        return None
+    try:
+        headers = ctx.headers
+        if headers is not None:
+            session_id = headers.get("mcp-session-id")
+            return f"http:{session_id[:100]}" if session_id else None
+        # The server's lifespan state, which the SDK makes once per in-process or stdio connection (server.py).
+        state = ctx.request_context.lifespan_context
+    except (AttributeError, LookupError, ValueError):
+        return None
+    return state.get("connection") if isinstance(state, dict) else None
 
 
 def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
@@ -127,9 +150,10 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
 
     @define_tool(mcp, title="Start an episode", effect="act",
                  description="Start an episode of a task. Returns the episode_id to pass to every other tool.")
-    async def start_episode(task_id: str, options: EpisodeOptions | None = None) -> Annotated[CallToolResult, EpisodeStarted]:
+    async def start_episode(task_id: str, options: EpisodeOptions | None = None,
+                            ctx: Context | None = None) -> Annotated[CallToolResult, EpisodeStarted]:
         opts = (options or EpisodeOptions()).model_dump(exclude_none=True)
-        episode = await episodes.start(task_id, opts)
+        episode = await episodes.start(task_id, opts, client=client_key(ctx))
         _, observation = await episodes.act(episode.id, "start_episode", {"task_id": task_id, "options": opts},
                                             _observe, environment=None, counted=False)
         out = EpisodeStarted(
@@ -189,13 +213,18 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
             episode, _ = await episodes.act(episode_id, "episode_status", {}, note, environment=None)
         s = episode.summary()
         walk = s.get("walk_stopped")
+        limits = episodes.limits()
         text = (
             f"{episode.id}: task {episode.task.id} ({episode.task.domain}), {episode.status}"
             + (f" ({episode.end_reason})" if episode.end_reason else "")
             + f"; active {episode.active}; steps {episode.steps}/{episode.task.step_limit}; switches {episode.switches}"
             + ("" if walk is None else ("; walk stopped" if walk else "; walk not stopped"))
+            + f"\nServer: {limits['open_episodes']} open episodes"
+            + (f" of at most {limits['max_episodes']}" if limits["max_episodes"] else "")
+            + (f"; an episode with no call for {limits['idle_timeout_s']:g} s is ended (aborted)"
+               if limits["idle_timeout_s"] else "")
         )
-        return tool_result(EpisodeStatus(**s), text)
+        return tool_result(EpisodeStatus(**s, server=limits), text)
 
     @mcp.resource("ewa://tasks/{task_id}", mime_type="application/json", description="A task as the agent may see it")
     def task_resource(task_id: str) -> str:
