@@ -403,8 +403,9 @@ class TaskStore:
                         # One bad file must not take the whole suite down; it is reported instead.
                         self.errors.append(str(exc))
             self._tasks = tasks
-            for err in self.errors if self.on_error is not None else ():
-                self.on_error(err)
+            if self.on_error is not None:
+                for err in self.errors:
+                    self.on_error(err)
         return self._tasks
 
     def add(self, task: Task) -> None:
