@@ -184,6 +184,8 @@ def cmd_eval(args: argparse.Namespace) -> int:
     except (EvalError, ReplayError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
+    from .evaluation.workers import EvalInterrupted
+
     run_dir = run_dir_from(args.run_dir)
     try:
         summary = play_from_args(tasks, agent, args, run_dir=run_dir, task_dirs=task_dirs, announce=lambda scale: print(
@@ -192,6 +194,10 @@ def cmd_eval(args: argparse.Namespace) -> int:
     except EvalError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
+    except EvalInterrupted as exc:
+        print(f"\neval: stopped by {exc}; the workers and their browsers are stopped, and {run_dir} holds only "
+              "the episodes accepted before it", file=sys.stderr)
+        return 128 + exc.signum
     print(render_report(grade_run(run_dir), fmt=args.format))
     return 1 if any(o.failure for o in summary.outcomes) else 0
 
