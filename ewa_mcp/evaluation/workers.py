@@ -235,8 +235,8 @@ class _Driver:
                 self.check_deaths()
             self.stop()
         finally:
-            for sig in previous:  # a second signal now would cut the cleanup short
-                signal.signal(sig, signal.SIG_IGN)
+            for signum in previous:  # a second signal now would cut the cleanup short
+                signal.signal(signum, signal.SIG_IGN)
             for worker in self.workers.values():
                 if worker.process.is_alive():
                     worker.process.terminate()  # the worker kills its browser tree (lifeline.py)
@@ -247,8 +247,8 @@ class _Driver:
                     worker.process.join(timeout=5)
             # What is left there was never accepted (an interrupted run): the run directory stays accepted-only.
             shutil.rmtree(self.staging_root, ignore_errors=True)
-            for sig, handler in previous.items():
-                signal.signal(sig, handler)
+            for signum, handler in previous.items():
+                signal.signal(signum, handler)
         self.summary.seconds = time.monotonic() - t0
         return self.summary
 
