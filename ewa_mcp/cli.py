@@ -186,6 +186,8 @@ def cmd_eval(args: argparse.Namespace) -> int:
         return 2
     from .evaluation.workers import EvalInterrupted
 
+    # A refused tool call is part of the episode's record; the SDK's INFO line for each (as the workers do).
+    logging.getLogger("mcp").setLevel(logging.WARNING)
     run_dir = run_dir_from(args.run_dir)
     try:
         summary = play_from_args(tasks, agent, args, run_dir=run_dir, task_dirs=task_dirs, announce=lambda scale: print(

@@ -7,6 +7,7 @@ counts the step and appends the trajectory line — in that order, in one place.
 
 from __future__ import annotations
 
+import shutil
 import time
 import uuid
 from collections.abc import Awaitable, Callable
@@ -20,7 +21,7 @@ from mcp.server.mcpserver.exceptions import ToolError
 
 from . import registry
 from .environment import EnvError, Environment, Observation
-from .records import EpisodeRecorder
+from .records import EpisodeRecorder, RecordWriteError
 from .services import Services
 from .taskmodel import SCHEMA_VERSION, EnvSide, Task, TaskStore
 
@@ -71,6 +72,7 @@ class Episode:
     # Who started it (an MCP session: per-client cap) and when a call last touched it (idle reaping).
     client: str | None = None
     last_call: float = field(default_factory=time.monotonic)
+    record_error: str | None = None  # why its record could not be written (then it is ended: an incomplete record)
 
     @property
     def steps_left(self) -> int:
@@ -256,8 +258,16 @@ class EpisodeManager:
         classes = {kind: self.env_class(name) for kind, name in needed.items()}  # fail before creating anything
         self._admit(client)  # checked and taken (below, in _starting) with no await between
         episode_id = "ep-" + uuid.uuid4().hex[:12]
-        recorder = EpisodeRecorder(self.run_dir / episode_id)
-        recorder.write_task(task.model_dump(mode="json"))
+        try:
+            recorder = EpisodeRecorder(self.run_dir / episode_id)
+        except RecordWriteError as exc:
+            raise EpisodeError(f"start_episode: nothing was started: {exc}") from exc
+        try:
+            recorder.write_task(task.model_dump(mode="json"))
+        except RecordWriteError as exc:
+            recorder.close()
+            shutil.rmtree(self.run_dir / episode_id, ignore_errors=True)  # no folder without its task.json
+            raise EpisodeError(f"start_episode: nothing was started: {exc}") from exc
         episode = Episode(id=episode_id, task=task, recorder=recorder, options=options, active=task.start.environment,
                           environment_names=dict(needed), client=client)
         self._starting[episode_id] = episode
@@ -360,11 +370,21 @@ class EpisodeManager:
                 raise ToolError(error) from exc
             finally:
                 episode.last_call = time.monotonic()  # idle time counts from the end of the last call
-                self._record(episode, tool, args, started, error, observation, counted)
-                if ends is not None and error is None:
+                try:
+                    self._record(episode, tool, args, started, error, observation, counted)
+                except RecordWriteError as exc:
+                    episode.record_error = str(exc)
+                if episode.record_error is not None and episode.status == "running":
+                    # A record missing a call cannot be graded: the episode ends here, and says why.
+                    await self._end(episode, "aborted", f"its record could not be written: {episode.record_error}")
+                elif ends is not None and error is None:
                     await self._end(episode, ends, END_REASONS.get(ends, ends))
                 elif counted and episode.status == "running" and episode.steps >= episode.task.step_limit:
                     await self._end(episode, "step_limit", f"step limit of {episode.task.step_limit} reached")
+                if episode.record_error is not None:
+                    done = "was done" if error is None else "failed"
+                    raise ToolError(f"{tool} {done}, but the episode's record could not be written, so the episode "
+                                    f"has ended ({episode.status}): {episode.record_error}")
 
     def _record(self, episode: Episode, tool: str, args: dict[str, Any], started: float, error: str | None,
                 observation: Observation | None, counted: bool) -> None:
@@ -396,7 +416,12 @@ class EpisodeManager:
             if episode.status != "running":
                 return
             episode.last_call = time.monotonic()
-            self._record(episode, tool, bounded_args(args), time.perf_counter(), error, None, True)
+            try:
+                self._record(episode, tool, bounded_args(args), time.perf_counter(), error, None, True)
+            except RecordWriteError as exc:
+                episode.record_error = str(exc)
+                await self._end(episode, "aborted", f"its record could not be written: {episode.record_error}")
+                return
             if episode.steps >= episode.task.step_limit:
                 await self._end(episode, "step_limit", f"step limit of {episode.task.step_limit} reached")
 
@@ -447,7 +472,7 @@ class EpisodeManager:
                 env_states[kind] = {"name": type(env).name, **(await env.final_state())}
             except Exception as exc:  # a broken environment still leaves a gradable record
                 env_states[kind] = {"name": type(env).name, "error": f"{type(exc).__name__}: {exc}"}
-        episode.recorder.write_final_state(
+        final = (
             {
                 "schema_version": SCHEMA_VERSION,
                 "episode_id": episode.id,
@@ -468,6 +493,11 @@ class EpisodeManager:
                 "environments": env_states,
             }
         )
+        try:
+            episode.recorder.write_final_state(final)
+        except RecordWriteError as exc:
+            # The episode still ends (its environments are released below); the call that ended it says so.
+            episode.record_error = episode.record_error or str(exc)
         for env in episode.environments.values():
             with anyio.CancelScope(shield=True):
                 try:
@@ -481,7 +511,10 @@ class EpisodeManager:
         episode = self._episodes.get(episode_id) or self._starting.get(episode_id)
         if episode is not None:
             episode.web_events.append(event)
-            episode.recorder.event(event)
+            try:
+                episode.recorder.event(event)
+            except RecordWriteError as exc:  # the episode's next call ends it and says why
+                episode.record_error = episode.record_error or str(exc)
         for listener in self.event_listeners:
             listener(episode_id, event)
 

@@ -36,6 +36,10 @@ from .runner import EpisodeOutcome, EvalError, EvalSummary, Progress
 STAGING = ".staging"
 
 
+class RecordStop(Exception):
+    """A worker's episode record could not be written: the run stops (play() reports it in one line)."""
+
+
 class EvalInterrupted(Exception):
     """The driver was asked to stop by a signal; its workers are stopped and nothing is left behind."""
 
@@ -158,6 +162,9 @@ class _Driver:
             raise EvalError(f"an eval worker could not start: {message[2]}")
         elif kind == "done":
             slot, outcome = message[2], EpisodeOutcome(**message[3])
+            if outcome.record_problem is not None:  # a full disk: every episode after it would fail the same way
+                self.summary.record_problem = outcome.record_problem
+                raise RecordStop()
             if self.ledger.finish(wid, slot, outcome):
                 self.land(worker, outcome)
                 self.record(outcome)
@@ -234,6 +241,8 @@ class _Driver:
                     pass
                 self.check_deaths()
             self.stop()
+        except RecordStop:
+            pass  # the workers are stopped below; the summary carries the problem
         finally:
             for signum in previous:  # a second signal now would cut the cleanup short
                 signal.signal(signum, signal.SIG_IGN)
