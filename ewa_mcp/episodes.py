@@ -174,13 +174,11 @@ class EpisodeManager:
 
     def _admit(self, client: str | None) -> None:
         if self.max_episodes and self.open_episodes() >= self.max_episodes:
+            wait = f", wait (episodes with no call for {self.idle_s:g} s are ended)" if self.idle_s else ""
             raise CapacityError(
                 f"the server already holds {self.max_episodes} open episodes, its cap (the max_episodes setting, "
-                "EWA_MAX_EPISODES); finish one with finish_episode, or wait: episodes with no call for "
-                f"{self.idle_s:g} s are ended" if self.idle_s else
-                f"the server already holds {self.max_episodes} open episodes, its cap (the max_episodes setting, "
-                "EWA_MAX_EPISODES); finish one with finish_episode, or raise EWA_MAX_EPISODES where the machine "
-                "can serve more")
+                f"EWA_MAX_EPISODES); finish one with finish_episode{wait}, or raise EWA_MAX_EPISODES where the "
+                "machine can serve more")
         if self.max_per_client and client is not None and self.open_episodes(client) >= self.max_per_client:
             raise CapacityError(
                 f"this client already holds {self.max_per_client} open episodes, the cap per client (the "
