@@ -14,15 +14,24 @@ from . import __version__
 
 def _task_dirs_or_error(given: list[str] | None) -> list[Path] | None:
     """The task directories to use, or None after printing why there are none (the caller exits 2)."""
-    from .core.paths import TaskStoreMissing, check_task_dirs, tasks_dir
+    from .core.paths import TaskStoreMissing, check_task_dirs, task_dirs
 
-    dirs = [Path(p) for p in given] if given else [tasks_dir()]
+    dirs = [Path(p) for p in given] if given else task_dirs()  # every directory of EWA_TASKS_DIR=a:b
     try:
         check_task_dirs(dirs)
     except TaskStoreMissing as exc:
         print(f"error: {exc}", file=sys.stderr)
         return None
     return dirs
+
+
+def _report_skipped(errors: list[str], limit: int = 20) -> None:
+    """Name the task files a store skipped (path, reason, fix) on stderr; the good tasks are still used."""
+    for err in errors[:limit]:
+        print(f"warning: skipped {err}", file=sys.stderr)
+    if len(errors) > limit:
+        print(f"warning: {len(errors) - limit} more bad task files; `ewa-mcp tasks validate` lists them all",
+              file=sys.stderr)
 
 
 def serve_flags(args: argparse.Namespace) -> dict[str, object]:
@@ -122,13 +131,25 @@ def cmd_tasks(args: argparse.Namespace) -> int:
               "regenerate them with `ewa-mcp tasks generate -o DIR`", file=sys.stderr)
         return 2
     if args.action == "validate":
+        from .taskrefs import ReferenceChecker, street_dirs_of
+
         for err in store.errors:
             print(f"error: {err}", file=sys.stderr)
+        # The schema passed; now every kitchen, city, node, recipe, product and standpoint must exist.
+        checker = ReferenceChecker(street_dirs_of(roots))
+        missing = 0
+        for t in sorted(tasks, key=lambda t: t.id):
+            for problem in checker.missing(t):
+                missing += 1
+                print(f"error: {store.sources.get(t.id, '?')}: task {t.id}: {problem}; fix the reference or "
+                      "regenerate the suite (`ewa-mcp tasks generate`)", file=sys.stderr)
         counts: dict[str, int] = {}
         for t in tasks:
             counts[t.domain] = counts.get(t.domain, 0) + 1
-        print(json.dumps({"tasks": len(tasks), "by_domain": counts, "errors": len(store.errors)}))
-        return 1 if store.errors else 0
+        print(json.dumps({"tasks": len(tasks), "by_domain": counts, "errors": len(store.errors) + missing,
+                          "bad_files": len(store.errors), "missing_references": missing}))
+        return 1 if store.errors or missing else 0
+    _report_skipped(store.errors)
     for t in sorted(tasks, key=lambda t: t.id):
         if args.domain and t.domain not in args.domain:
             continue
@@ -155,10 +176,18 @@ def cmd_eval(args: argparse.Namespace) -> int:
         patterns = args.tasks
         if args.agent == "replay" and not patterns:
             patterns = sorted(agent.calls)  # a replay runs the tasks it has calls for
-        tasks = select_tasks(TaskStore(task_dirs), patterns, args.sample, args.domain, args.difficulty)
+        store = TaskStore(task_dirs)
+        try:
+            tasks = select_tasks(store, patterns, args.sample, args.domain, args.difficulty)
+        finally:
+            _report_skipped(store.errors)
     except (EvalError, ReplayError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
+    from .evaluation.workers import EvalInterrupted
+
+    # A refused tool call is part of the episode's record; the SDK's INFO line for each (as the workers do).
+    logging.getLogger("mcp").setLevel(logging.WARNING)
     run_dir = run_dir_from(args.run_dir)
     try:
         summary = play_from_args(tasks, agent, args, run_dir=run_dir, task_dirs=task_dirs, announce=lambda scale: print(
@@ -167,6 +196,10 @@ def cmd_eval(args: argparse.Namespace) -> int:
     except EvalError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
+    except EvalInterrupted as exc:
+        print(f"\neval: stopped by {exc}; the workers and their browsers are stopped, and {run_dir} holds only "
+              "the episodes accepted before it", file=sys.stderr)
+        return 128 + exc.signum
     print(render_report(grade_run(run_dir), fmt=args.format))
     return 1 if any(o.failure for o in summary.outcomes) else 0
 

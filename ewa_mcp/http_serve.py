@@ -1,9 +1,11 @@
 """Serving the MCP server over streamable HTTP, with a bearer token wherever it is reachable.
 
-On a loopback address the server answers without a token (only this machine can reach it).
-Bound past loopback (``--allow-remote``) every request must carry ``Authorization: Bearer
-<token>``: the token given with ``--token`` or ``EWA_MCP_TOKEN``, or one generated at start and
-printed once. A token given on loopback is required there too.
+On the default addresses (127.0.0.1, localhost, ::1) the server answers without a token (only this
+machine can reach it). Bound anywhere else — another loopback address such as 127.0.0.2, or past
+loopback with ``--allow-remote`` — every request must carry ``Authorization: Bearer <token>``: the
+token given with ``--token`` or ``EWA_MCP_TOKEN``, or one generated at start and printed once. A token
+given on a default address is required there too. On every address the Host and Origin headers are
+checked (``HostOriginGuard``), so a page on another site cannot reach the server by DNS rebinding.
 
 The MCP SDK's own auth (``AuthSettings`` + a ``TokenVerifier``) is built for OAuth: it needs an
 authorization server's issuer URL and publishes protected-resource metadata pointing at it. A
@@ -16,6 +18,7 @@ import hmac
 import ipaddress
 import json
 import secrets
+import socket
 import sys
 from typing import Any
 
@@ -40,6 +43,16 @@ def is_loopback_host(host: str) -> bool:
         return False
 
 
+# The binds that need no token: only these name exactly the one machine's own loopback interface by default.
+DEFAULT_BINDS = ("127.0.0.1", "localhost", "::1")
+WILDCARD_BINDS = ("0.0.0.0", "::", "")
+
+
+def is_default_bind(host: str) -> bool:
+    """True for 127.0.0.1, localhost and ::1: the addresses served without a token unless one is given."""
+    return host.strip().strip("[]").lower() in DEFAULT_BINDS
+
+
 def check_token(token: str) -> str:
     token = token.strip()
     if len(token) < MIN_TOKEN_CHARS:
@@ -55,9 +68,89 @@ def choose_token(host: str, given: str | None) -> tuple[str | None, bool]:
     mcp_token setting: ``--token`` or, when that is absent, ``EWA_MCP_TOKEN``."""
     if given is not None:
         return check_token(given), False
-    if is_loopback_host(host):
+    if is_default_bind(host):
         return None, False
     return secrets.token_urlsafe(32), True
+
+
+def _host_names(host: str) -> list[str]:
+    """A bound address as a Host header may name it (IPv6 in brackets)."""
+    bare = host.strip().strip("[]")
+    return [f"[{bare}]" if ":" in bare else bare]
+
+
+def allowed_hosts(host: str, extra: list[str] | None = None) -> list[str]:
+    """The Host header values a server bound to ``host`` answers: the loopback names, the bound address, for
+    a wildcard bind (0.0.0.0, ::) this machine's name and addresses, and the allowed_hosts setting."""
+    names = ["127.0.0.1", "localhost", "[::1]"]
+    bare = host.strip().strip("[]")
+    if bare in WILDCARD_BINDS:
+        machine = socket.gethostname()
+        names += [machine, socket.getfqdn()]
+        try:
+            names += sorted({str(info[4][0]) for info in socket.getaddrinfo(machine, None)})
+        except OSError:
+            pass
+    else:
+        names.append(bare)
+    names += [h.strip() for h in extra or [] if h.strip()]
+    out: list[str] = []
+    for name in names:
+        for shown in _host_names(name):
+            if shown.lower() not in out:
+                out.append(shown.lower())
+    return out
+
+
+class HostOriginGuard:
+    """ASGI middleware on every bind: a request whose Host header is not one of ``hosts`` (with any port) is
+    refused with 421, one whose Origin header names another host with 403, each with a JSON body saying what
+    to change. A browser page of another site (DNS rebinding) sends its own name in both; MCP clients that are
+    not browsers send the Host they connected to and no Origin."""
+
+    def __init__(self, app: Any, hosts: list[str]):
+        self.app = app
+        self.hosts = {h.lower() for h in hosts}
+
+    def _known(self, hostport: str) -> bool:
+        hostport = hostport.strip().lower()
+        if hostport.startswith("["):
+            name = hostport[: hostport.find("]") + 1] if "]" in hostport else hostport
+        else:
+            name = hostport.rsplit(":", 1)[0] if hostport.count(":") == 1 else hostport
+        return name in self.hosts
+
+    async def __call__(self, scope: dict[str, Any], receive: Any, send: Any) -> None:
+        if scope["type"] not in ("http", "websocket"):
+            await self.app(scope, receive, send)
+            return
+        headers = {k.lower(): v for k, v in scope.get("headers", [])}
+        host = headers.get(b"host", b"").decode("latin-1")
+        origin = headers.get(b"origin")
+        fix = ("connect by one of the names this server answers to (" + ", ".join(sorted(self.hosts)) + "), "
+               "or add the name to EWA_ALLOWED_HOSTS (comma-separated) when starting `ewa-mcp serve`")
+        if not host or not self._known(host):
+            await self._refuse(scope, send, 421, "misdirected_request",
+                               f"the Host header {host[:100]!r} is not a name of this ewa-mcp server: {fix}")
+            return
+        if origin is not None:
+            text = origin.decode("latin-1")
+            scheme, sep, rest = text.partition("://")
+            if not sep or scheme.lower() not in ("http", "https") or not self._known(rest.split("/", 1)[0]):
+                await self._refuse(scope, send, 403, "forbidden_origin",
+                                   f"requests from the web page origin {text[:100]!r} are refused (a page of "
+                                   f"another site must not drive this server); {fix}")
+                return
+        await self.app(scope, receive, send)
+
+    async def _refuse(self, scope: dict[str, Any], send: Any, status: int, error: str, message: str) -> None:
+        if scope["type"] == "websocket":
+            await send({"type": "websocket.close", "code": 1008, "reason": message[:120]})
+            return
+        body = json.dumps({"error": error, "error_description": message}).encode()
+        await send({"type": "http.response.start", "status": status,
+                    "headers": [(b"content-type", b"application/json"), (b"content-length", str(len(body)).encode())]})
+        await send({"type": "http.response.body", "body": body})
 
 
 class BearerTokenGuard:
@@ -116,9 +209,15 @@ def serve_http(mcp: Any, settings: Settings) -> int:
     except TokenError as exc:
         print(f"ewa-mcp serve: {exc}", file=sys.stderr)
         return 2
-    # The SDK guards loopback hosts against DNS rebinding by the Host header; past loopback the
-    # Host header is the machine's name, and the token is what keeps other pages out.
-    app: Any = mcp.streamable_http_app(host=host)
+    # The SDK guards only the default loopback binds by the Host header; HostOriginGuard checks Host and Origin
+    # on every bind (127.0.0.2 and 0.0.0.0 included), and the SDK is given the same names.
+    from mcp.server.transport_security import TransportSecuritySettings
+
+    hosts = allowed_hosts(host, settings.allowed_hosts)
+    security = TransportSecuritySettings(allowed_hosts=[f"{h}:*" for h in hosts] + hosts,
+                                         allowed_origins=[f"{s}://{h}{p}" for s in ("http", "https") for h in hosts
+                                                          for p in (":*", "")])
+    app: Any = mcp.streamable_http_app(host=host, transport_security=security)
     if required is not None:
         app = BearerTokenGuard(app, required)
         if generated:
@@ -127,6 +226,7 @@ def serve_http(mcp: Any, settings: Settings) -> int:
         else:
             print("every request must carry the bearer token given with --token or "
                   f"{TOKEN_ENV} ('Authorization: Bearer <token>')", file=sys.stderr)
+    app = HostOriginGuard(app, hosts)  # outermost: a request from a rebound name is refused before anything else
     print(f"MCP endpoint: http://{host}:{port}/mcp", file=sys.stderr)
     config = uvicorn.Config(app, host=host, port=port, log_level="warning")
     anyio.run(uvicorn.Server(config).serve)

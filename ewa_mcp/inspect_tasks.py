@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import atexit
 import json
+import os
 import subprocess
 import sys
 import time
@@ -39,7 +40,7 @@ from .core import registry
 from .evaluation.llm import HIDDEN_TOOLS, NUDGE, SYSTEM_PROMPT
 from .evaluation.runner import EvalError, _free_port, select_tasks
 from .core.paths import TaskStoreMissing, check_task_dirs, runs_dir  # noqa: F401 (re-exported)
-from .core.paths import tasks_dir as default_tasks_dir
+from .core.paths import task_dirs as default_task_dirs
 from .core.records import new_run_id
 from .settings import child_server_env
 from .core.taskmodel import TaskStore
@@ -52,7 +53,8 @@ GEO_LEVELS = ("continent", "country", "city", "street")
 def ewa_dataset(domains: list[str] | None = None, difficulty: str | None = None, sample: int | None = None,
                 tasks: str | None = None, tasks_dir_: str | None = None) -> MemoryDataset:
     """The task store as an Inspect dataset: one sample per task, id = task id, metadata = domain etc."""
-    dirs = [Path(tasks_dir_)] if tasks_dir_ else [default_tasks_dir()]
+    # tasks_dir_ may list several directories, like EWA_TASKS_DIR (dir1:dir2)
+    dirs = [Path(p) for p in tasks_dir_.split(os.pathsep) if p] if tasks_dir_ else default_task_dirs()
     check_task_dirs(dirs)
     store = TaskStore(dirs)
     chosen = select_tasks(store, [tasks] if tasks else None, None, domains)
@@ -310,10 +312,11 @@ def ewa_task(domains: list[str] | None, *, difficulty: str | None = None, sample
              run_dir: str | None = None, max_turns: int | None = None) -> Task:
     if observation not in ("text", "vision", "both"):
         raise EvalError(f"observation={observation[:50]!r}: use text, vision or both")
-    dirs = [str(Path(tasks_dir).resolve())] if tasks_dir else [str(default_tasks_dir())]
+    dirs = ([str(Path(p).resolve()) for p in tasks_dir.split(os.pathsep) if p] if tasks_dir
+            else [str(d) for d in default_task_dirs()])
     out = str(Path(run_dir).resolve()) if run_dir else str((runs_dir() / ("inspect-" + new_run_id())).resolve())
     return Task(
-        dataset=ewa_dataset(domains, difficulty, sample, tasks, dirs[0]),
+        dataset=ewa_dataset(domains, difficulty, sample, tasks, os.pathsep.join(dirs)),
         solver=ewa_agent(run_dir=out, task_dirs=dirs, observation=observation, max_turns=max_turns),
         scorer=ewa_grader(),
         metadata={"run_dir": out, "ewa_mcp_domains": domains or list(DOMAINS)},

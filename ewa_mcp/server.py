@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import importlib
 import logging
+import uuid
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 from dataclasses import dataclass
@@ -84,7 +85,7 @@ def build_server(config: ServerConfig | None = None) -> tuple[MCPServer, Episode
     Raises ``SettingsError`` (naming the variable and the fix) when an EWA_* variable is invalid."""
     config = config or ServerConfig()
     settings = config.resolved_settings()
-    tasks = TaskStore(task_dirs(settings))
+    tasks = TaskStore(task_dirs(settings), on_error=lambda err: log.warning("skipped a task file: %s", err))
     # Imported task directories carry their street graphs in a streets/ folder (ewa-mcp tasks import-ewa).
     streets = [Path(d) / "streets" for d in tasks.roots if (Path(d) / "streets").is_dir()]
     if streets:
@@ -97,15 +98,25 @@ def build_server(config: ServerConfig | None = None) -> tuple[MCPServer, Episode
     # The embedded sites report per-episode events (orders, page views) through this sink.
     services.emit_event = episodes.emit_event
 
+    connected = 0
+
     @asynccontextmanager
-    async def lifespan(_: MCPServer) -> AsyncIterator[None]:
-        # Only shutdown matters here: the tools reach the episode manager through register(), so the
-        # lifespan context carries nothing. Stopping the server ends open episodes and the browser.
+    async def lifespan(_: MCPServer) -> AsyncIterator[dict[str, str]]:
+        # The tools reach the episode manager through register(); the lifespan state names the connection (the
+        # per-client cap's client: tools/core.client_key). The SDK enters it once per server for HTTP, once per
+        # connection in-process and over stdio: the episodes belong to the server, so they (and the browser)
+        # end only when the last connection leaves, never when one client of several does.
+        nonlocal connected
+        connected += 1
+        if connected == 1:
+            episodes.start_reaper()
         try:
-            yield
+            yield {"connection": f"connection-{uuid.uuid4().hex[:12]}"}
         finally:
-            await episodes.aclose()
-            await services.aclose()
+            connected -= 1
+            if connected == 0:
+                await episodes.aclose()
+                await services.aclose()
 
     mcp = EpisodeServer("ewa-mcp", instructions=instructions(), version=__version__, lifespan=lifespan)
     mcp.episodes = episodes

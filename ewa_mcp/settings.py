@@ -65,9 +65,14 @@ FIXES: dict[str, str] = {
     "browser": 'a JSON object of browser options, e.g. {"headless": false}, or set one option with '
                "EWA_BROWSER__<OPTION> (EWA_BROWSER__HEADLESS=false)",
     "site_ports": 'a JSON object of site name -> port, e.g. {"shop": 9001}',
+    "allowed_hosts": "host names or addresses separated by commas, e.g. ewa.example.org,10.0.0.5",
+    "max_episodes": "a whole number of episodes, 0 for no cap",
+    "max_episodes_per_client": "a whole number of episodes, 0 for no cap",
+    "episode_idle_s": "a number of seconds, 0 to never end idle episodes",
 }
 
 PathList = Annotated[list[Path], NoDecode]  # "dir1:dir2" (os.pathsep), not JSON
+HostList = Annotated[list[str], NoDecode]  # "name1,name2" (IPv6 addresses hold colons), not JSON
 
 
 class SettingsError(ValueError):
@@ -97,7 +102,16 @@ class Settings(BaseSettings):
     port: int = Field(8765, ge=1, le=65535)
     allow_remote: bool = False
     mcp_token: SecretStr | None = Field(None, description="bearer token HTTP requests must carry")
+    allowed_hosts: HostList = Field(default_factory=list, description="more Host names the HTTP server answers "
+                                    "to (comma-separated), e.g. a DNS name or proxy in front of it")
     verbose: bool = False
+
+    # -- admission: what the server holds open at once (ewa_mcp/core/episodes.py)
+    max_episodes: int = Field(256, ge=0, description="open episodes the server admits at once (0: no cap)")
+    max_episodes_per_client: int = Field(0, ge=0, description="open episodes one MCP session may hold at once "
+                                         "(0: no cap)")
+    episode_idle_s: float = Field(1800.0, ge=0, description="an episode with no call for this long is ended as "
+                                  "aborted and its environments released (0: never)")
 
     # -- environments
     chromium: str | None = Field(None, description="the Chromium/Chrome executable (default: discovered)")
@@ -115,6 +129,21 @@ class Settings(BaseSettings):
             return [Path(p) for p in value.split(os.pathsep) if p.strip()]
         if isinstance(value, os.PathLike):
             return [Path(value)]
+        return value
+
+    @field_validator("allowed_hosts", mode="before")
+    @classmethod
+    def _split_hosts(cls, value: Any) -> Any:
+        if isinstance(value, str):
+            return [h.strip() for h in value.split(",") if h.strip()]
+        return value
+
+    @field_validator("allowed_hosts")
+    @classmethod
+    def _plain_hosts(cls, value: list[str]) -> list[str]:
+        for host in value:
+            if any(c.isspace() or c in "/@?#" for c in host) or not host.isascii():
+                raise ValueError(f"{host[:100]!r} is not a host name or address")
         return value
 
     @field_validator("kitchen_backend", "transport", mode="before")
@@ -141,7 +170,7 @@ def env_name(field: str) -> str:
 
 # How a `serve` is reached: a process that starts its own loopback server sets these with flags (or not at all:
 # no token on loopback) and must not inherit the caller's, which may describe another server.
-SERVE_ONLY = ("transport", "host", "port", "allow_remote", "mcp_token", "run_dir")
+SERVE_ONLY = ("transport", "host", "port", "allow_remote", "mcp_token", "run_dir", "allowed_hosts")
 
 
 def child_server_env(environ: Mapping[str, str] | None = None) -> dict[str, str]:

@@ -7,6 +7,7 @@ counts the step and appends the trajectory line — in that order, in one place.
 
 from __future__ import annotations
 
+import shutil
 import time
 import uuid
 from collections.abc import Awaitable, Callable
@@ -20,7 +21,7 @@ from mcp.server.mcpserver.exceptions import ToolError
 
 from . import registry
 from .environment import EnvError, Environment, Observation
-from .records import EpisodeRecorder
+from .records import EpisodeRecorder, RecordWriteError
 from .services import Services
 from .taskmodel import SCHEMA_VERSION, EnvSide, Task, TaskStore
 
@@ -68,6 +69,10 @@ class Episode:
     started_at: float = field(default_factory=time.time)
     ended_at: float | None = None
     lock: anyio.Lock = field(default_factory=anyio.Lock)
+    # Who started it (an MCP session: per-client cap) and when a call last touched it (idle reaping).
+    client: str | None = None
+    last_call: float = field(default_factory=time.monotonic)
+    record_error: str | None = None  # why its record could not be written (then it is ended: an incomplete record)
 
     @property
     def steps_left(self) -> int:
@@ -123,7 +128,16 @@ def bounded_args(args: dict[str, Any]) -> dict[str, Any]:
     return out
 
 
+class CapacityError(EpisodeError):
+    """The server (or this client) holds as many open episodes as it admits; the message names the setting."""
+
+
 class EpisodeManager:
+    """The server's episodes. They belong to the server, not to the connection that started them: any client may
+    act on an episode by its id, and a client leaving ends none (docs/architecture.md, "Episodes and clients").
+    An episode ends by finish_episode (or submit_location), at its step limit, when it has had no call for
+    ``episode_idle_s`` (aborted, its environments released), or when the server stops (aborted)."""
+
     def __init__(
         self,
         tasks: TaskStore,
@@ -140,6 +154,81 @@ class EpisodeManager:
         # Episodes whose environments are being reset: the sites' events of their start pages land too.
         self._starting: dict[str, Episode] = {}
         self.event_listeners: list[Callable[[str, dict[str, Any]], None]] = []
+        settings = self.services.settings
+        self.max_episodes = settings.max_episodes  # 0: no cap
+        self.max_per_client = settings.max_episodes_per_client
+        self.idle_s = settings.episode_idle_s  # 0: never reaped
+        self._reaper: Any = None
+        self.reaped = 0
+
+    # ------------------------------------------------------------ admission and reaping
+    def open_episodes(self, client: str | None = None) -> int:
+        """Running and starting episodes (of one client, when given)."""
+        live = [e for e in self._episodes.values() if e.status == "running"] + list(self._starting.values())
+        return sum(1 for e in live if client is None or e.client == client)
+
+    def limits(self) -> dict[str, Any]:
+        """What episode_status shows of the server's admission rules."""
+        return {"open_episodes": self.open_episodes(), "max_episodes": self.max_episodes or None,
+                "max_episodes_per_client": self.max_per_client or None,
+                "idle_timeout_s": self.idle_s or None, "reaped_idle": self.reaped}
+
+    def _admit(self, client: str | None) -> None:
+        if self.max_episodes and self.open_episodes() >= self.max_episodes:
+            wait = f", wait (episodes with no call for {self.idle_s:g} s are ended)" if self.idle_s else ""
+            raise CapacityError(
+                f"the server already holds {self.max_episodes} open episodes, its cap (the max_episodes setting, "
+                f"EWA_MAX_EPISODES); finish one with finish_episode{wait}, or raise EWA_MAX_EPISODES where the "
+                "machine can serve more")
+        if self.max_per_client and client is not None and self.open_episodes(client) >= self.max_per_client:
+            raise CapacityError(
+                f"this client already holds {self.max_per_client} open episodes, the cap per client (the "
+                "max_episodes_per_client setting, EWA_MAX_EPISODES_PER_CLIENT); finish one with finish_episode "
+                "before starting another")
+
+    async def reap_idle(self) -> int:
+        """End every running episode that has had no call for ``idle_s`` (and none running now) as aborted,
+        releasing its environments (a browser context holds a renderer). Returns how many were ended."""
+        if not self.idle_s:
+            return 0
+        now = time.monotonic()
+        ended = 0
+        for episode in list(self._episodes.values()):
+            if episode.status != "running" or episode.lock.locked() or now - episode.last_call < self.idle_s:
+                continue
+            async with episode.lock:
+                if episode.status != "running" or time.monotonic() - episode.last_call < self.idle_s:
+                    continue
+                idle = time.monotonic() - episode.last_call
+                await self._end(episode, "aborted",
+                                f"idle: no call for {idle:.0f} s, longer than the server allows "
+                                f"({self.idle_s:g} s, the episode_idle_s setting, EWA_EPISODE_IDLE_S); its "
+                                "environments were released")
+                self.reaped += 1
+                ended += 1
+        return ended
+
+    def start_reaper(self) -> None:
+        """Check for idle episodes in the background while the server runs (stopped by aclose)."""
+        import asyncio
+
+        if not self.idle_s or self._reaper is not None:
+            return
+        try:
+            loop = asyncio.get_running_loop()
+        except RuntimeError:
+            return  # not under asyncio: idle episodes are still reaped whenever an episode starts
+
+        async def sweep() -> None:
+            every = min(30.0, max(0.2, self.idle_s / 4))
+            while True:
+                await asyncio.sleep(every)
+                try:
+                    await self.reap_idle()
+                except Exception:  # an environment that fails to close must not stop the sweeping
+                    pass
+
+        self._reaper = loop.create_task(sweep())
 
     # ------------------------------------------------------------ lifecycle
     def env_class(self, name: str) -> Any:
@@ -153,7 +242,10 @@ class EpisodeManager:
             )
         return registry.load_object(spec.cls)
 
-    async def start(self, task_id: str, options: dict[str, Any] | None = None) -> Episode:
+    async def start(self, task_id: str, options: dict[str, Any] | None = None, client: str | None = None) -> Episode:
+        """Start an episode of ``task_id`` for ``client`` (an MCP session; per-client cap), if the server admits
+        one more (``CapacityError`` names the setting when it does not)."""
+        await self.reap_idle()  # an idle episode's place is free before the cap is checked
         task = self.tasks.get(task_id)
         if task is None:
             prefix = task_id[:40].split("-")[0]
@@ -163,11 +255,20 @@ class EpisodeManager:
         options = dict(options or {})
         needed = task.environment_names()
         classes = {kind: self.env_class(name) for kind, name in needed.items()}  # fail before creating anything
+        self._admit(client)  # checked and taken (below, in _starting) with no await between
         episode_id = "ep-" + uuid.uuid4().hex[:12]
-        recorder = EpisodeRecorder(self.run_dir / episode_id)
-        recorder.write_task(task.model_dump(mode="json"))
+        try:
+            recorder = EpisodeRecorder(self.run_dir / episode_id)
+        except RecordWriteError as exc:
+            raise EpisodeError(f"start_episode: nothing was started: {exc}") from exc
+        try:
+            recorder.write_task(task.model_dump(mode="json"))
+        except RecordWriteError as exc:
+            recorder.close()
+            shutil.rmtree(self.run_dir / episode_id, ignore_errors=True)  # no folder without its task.json
+            raise EpisodeError(f"start_episode: nothing was started: {exc}") from exc
         episode = Episode(id=episode_id, task=task, recorder=recorder, options=options, active=task.start.environment,
-                          environment_names=dict(needed))
+                          environment_names=dict(needed), client=client)
         self._starting[episode_id] = episode
         try:
             for kind, cls in classes.items():
@@ -242,6 +343,7 @@ class EpisodeManager:
         async with episode.lock:
             # Re-check under the lock: a concurrent call may have ended the episode.
             episode = self.running(episode_id)
+            episode.last_call = time.monotonic()
             started = time.perf_counter()
             error: str | None = None
             observation: Observation | None = None
@@ -266,11 +368,22 @@ class EpisodeManager:
                 error = f"internal error in {tool}: {type(exc).__name__}: {exc}"
                 raise ToolError(error) from exc
             finally:
-                self._record(episode, tool, args, started, error, observation, counted)
-                if ends is not None and error is None:
+                episode.last_call = time.monotonic()  # idle time counts from the end of the last call
+                try:
+                    self._record(episode, tool, args, started, error, observation, counted)
+                except RecordWriteError as exc:
+                    episode.record_error = str(exc)
+                if episode.record_error is not None and episode.status == "running":
+                    # A record missing a call cannot be graded: the episode ends here, and says why.
+                    await self._end(episode, "aborted", f"its record could not be written: {episode.record_error}")
+                elif ends is not None and error is None:
                     await self._end(episode, ends, END_REASONS.get(ends, ends))
                 elif counted and episode.status == "running" and episode.steps >= episode.task.step_limit:
                     await self._end(episode, "step_limit", f"step limit of {episode.task.step_limit} reached")
+                if episode.record_error is not None:
+                    done = "was done" if error is None else "failed"
+                    raise ToolError(f"{tool} {done}, but the episode's record could not be written, so the episode "
+                                    f"has ended ({episode.status}): {episode.record_error}")
 
     def _record(self, episode: Episode, tool: str, args: dict[str, Any], started: float, error: str | None,
                 observation: Observation | None, counted: bool) -> None:
@@ -301,7 +414,13 @@ class EpisodeManager:
         async with episode.lock:
             if episode.status != "running":
                 return
-            self._record(episode, tool, bounded_args(args), time.perf_counter(), error, None, True)
+            episode.last_call = time.monotonic()
+            try:
+                self._record(episode, tool, bounded_args(args), time.perf_counter(), error, None, True)
+            except RecordWriteError as exc:
+                episode.record_error = str(exc)
+                await self._end(episode, "aborted", f"its record could not be written: {episode.record_error}")
+                return
             if episode.steps >= episode.task.step_limit:
                 await self._end(episode, "step_limit", f"step limit of {episode.task.step_limit} reached")
 
@@ -352,7 +471,7 @@ class EpisodeManager:
                 env_states[kind] = {"name": type(env).name, **(await env.final_state())}
             except Exception as exc:  # a broken environment still leaves a gradable record
                 env_states[kind] = {"name": type(env).name, "error": f"{type(exc).__name__}: {exc}"}
-        episode.recorder.write_final_state(
+        final = (
             {
                 "schema_version": SCHEMA_VERSION,
                 "episode_id": episode.id,
@@ -373,6 +492,11 @@ class EpisodeManager:
                 "environments": env_states,
             }
         )
+        try:
+            episode.recorder.write_final_state(final)
+        except RecordWriteError as exc:
+            # The episode still ends (its environments are released below); the call that ended it says so.
+            episode.record_error = episode.record_error or str(exc)
         for env in episode.environments.values():
             with anyio.CancelScope(shield=True):
                 try:
@@ -386,11 +510,17 @@ class EpisodeManager:
         episode = self._episodes.get(episode_id) or self._starting.get(episode_id)
         if episode is not None:
             episode.web_events.append(event)
-            episode.recorder.event(event)
+            try:
+                episode.recorder.event(event)
+            except RecordWriteError as exc:  # the episode's next call ends it and says why
+                episode.record_error = episode.record_error or str(exc)
         for listener in self.event_listeners:
             listener(episode_id, event)
 
     async def aclose(self) -> None:
+        reaper, self._reaper = self._reaper, None
+        if reaper is not None:
+            reaper.cancel()
         for episode in list(self._episodes.values()):
             if episode.status == "running":
                 async with episode.lock:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 from typing import Annotated, Any, Literal, cast
 
-from mcp.server.mcpserver import MCPServer
+from mcp.server.mcpserver import Context, MCPServer
 from mcp.server.mcpserver.exceptions import ResourceError
 from mcp_types import CallToolResult
 from pydantic import BaseModel, Field, create_model
@@ -46,6 +46,10 @@ class EpisodeStarted(BaseModel):
     observation: dict[str, Any]
 
 
+SERVER_DESCRIPTION = ("the server's admission rules: open_episodes, max_episodes, max_episodes_per_client, "
+                      "idle_timeout_s (an episode with no call for this long is ended as aborted), reaped_idle")
+
+
 class EpisodeStatus(BaseModel):
     episode_id: str
     task_id: str
@@ -59,6 +63,7 @@ class EpisodeStatus(BaseModel):
     steps_left: int
     switches: int
     answer: str | None
+    server: dict[str, Any] | None = Field(default=None, description=SERVER_DESCRIPTION)
 
 
 def status_model() -> type[EpisodeStatus]:
@@ -68,7 +73,8 @@ def status_model() -> type[EpisodeStatus]:
                               for f in registry.status_fields()}
     if not fields:
         return EpisodeStatus
-    model = create_model("EpisodeStatus", __base__=_StatusHead, **fields, answer=(str | None, ...))
+    model = create_model("EpisodeStatus", __base__=_StatusHead, **fields, answer=(str | None, ...),
+                         server=(dict[str, Any] | None, Field(default=None, description=SERVER_DESCRIPTION)))
     return cast("type[EpisodeStatus]", model)
 
 
@@ -114,6 +120,25 @@ async def _observe(episode: Any) -> Observation:
     return await env.observe()
 
 
+def client_key(ctx: Context | None) -> str | None:
+    """The client a call came from (the per-client cap counts its episodes). The 2026 protocol has no sessions,
+    so this is the transport's: an in-process or stdio connection, or over HTTP the Mcp-Session-Id of a client
+    that keeps a session (2025 protocols). Sessionless HTTP requests have none: only the server's cap counts
+    them."""
+    if ctx is None:
+        return None
+    try:
+        headers = ctx.headers
+        if headers is not None:
+            session_id = headers.get("mcp-session-id")
+            return f"http:{session_id[:100]}" if session_id else None
+        # The server's lifespan state, which the SDK makes once per in-process or stdio connection (server.py).
+        state = ctx.request_context.lifespan_context
+    except (AttributeError, LookupError, ValueError):
+        return None
+    return state.get("connection") if isinstance(state, dict) else None
+
+
 def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
     Status = status_model()
     finish_hints = "".join(f" {e.finish_hint}" for e in registry.ordered_environments() if e.finish_hint)
@@ -151,9 +176,10 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
 
     @define_tool(mcp, title="Start an episode", effect="act",
                  description="Start an episode of a task. Returns the episode_id to pass to every other tool.")
-    async def start_episode(task_id: str, options: EpisodeOptions | None = None) -> Annotated[CallToolResult, EpisodeStarted]:
+    async def start_episode(task_id: str, options: EpisodeOptions | None = None,
+                            ctx: Context | None = None) -> Annotated[CallToolResult, EpisodeStarted]:
         opts = (options or EpisodeOptions()).model_dump(exclude_none=True)
-        episode = await episodes.start(task_id, opts)
+        episode = await episodes.start(task_id, opts, client=client_key(ctx))
         _, observation = await episodes.act(episode.id, "start_episode", {"task_id": task_id, "options": opts},
                                             _observe, environment=None, counted=False)
         out = EpisodeStarted(
@@ -214,14 +240,19 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
 
             episode, _ = await episodes.act(episode_id, "episode_status", {}, note, environment=None)
         s = episode.summary()
+        limits = episodes.limits()
         text = (
             f"{episode.id}: task {episode.task.id} ({episode.task.domain}), {episode.status}"
             + (f" ({episode.end_reason})" if episode.end_reason else "")
             + f"; active {episode.active}; steps {episode.steps}/{episode.task.step_limit}; switches {episode.switches}"
             + "".join(f"; {status_words[k][0] if v else status_words[k][1]}" for k, v in s.items()
                       if k in status_words and v is not None)
+            + f"\nServer: {limits['open_episodes']} open episodes"
+            + (f" of at most {limits['max_episodes']}" if limits["max_episodes"] else "")
+            + (f"; an episode with no call for {limits['idle_timeout_s']:g} s is ended (aborted)"
+               if limits["idle_timeout_s"] else "")
         )
-        return tool_result(Status(**s), text)
+        return tool_result(Status(**s, server=limits), text)
 
     episode_status.__annotations__["return"] = Annotated[CallToolResult, Status]
     define_tool(mcp, title="Episode status", effect="look", description=(

@@ -10,8 +10,10 @@ runs/<run_id>/<episode_id>/
 
 from __future__ import annotations
 
+import errno
 import json
 import os
+import shutil
 import threading
 import time
 from datetime import UTC, datetime
@@ -96,13 +98,46 @@ def digest(text: str) -> str:
     return flat if len(flat) <= DIGEST_CHARS else flat[: DIGEST_CHARS - 1] + "…"
 
 
+# Every message of a RecordWriteError starts so: callers (eval) recognise a record that cannot be written by it.
+RECORD_WRITE_MARKER = "cannot write the episode record"
+
+
+def _mount_point(path: Path) -> Path:
+    path = path.resolve()
+    while not path.exists() and path != path.parent:
+        path = path.parent
+    while not os.path.ismount(path) and path != path.parent:
+        path = path.parent
+    return path
+
+
+def write_problem(directory: Path, exc: OSError) -> str:
+    """What went wrong writing under ``directory``, naming the disk (its mount point and free space) and the fix."""
+    full = exc.errno in (errno.ENOSPC, errno.EDQUOT, errno.EFBIG)
+    disk = _mount_point(directory)
+    try:
+        free = f"{shutil.disk_usage(disk).free // 1024} KiB free"
+    except OSError:
+        free = "free space unknown"
+    why = "the disk is full" if full else (exc.strerror or type(exc).__name__)
+    return (f"{RECORD_WRITE_MARKER} in {directory}: {why} (the disk mounted at {disk}, {free}); free space there, "
+            "or record on another disk (--run-dir DIR, EWA_RUNS_DIR)")
+
+
+class RecordWriteError(RuntimeError):
+    """A record file could not be written (a full disk, a read-only one); the message names the disk and the fix."""
+
+
 class EpisodeRecorder:
     def __init__(self, directory: Path):
         self.directory = directory
-        directory.mkdir(parents=True, exist_ok=True)
         self._lock = threading.Lock()  # sites emit events from their own threads
-        self._trajectory = open(directory / "trajectory.jsonl", "a", encoding="utf-8")
-        self._events = open(directory / "web_events.jsonl", "a", encoding="utf-8")
+        try:
+            directory.mkdir(parents=True, exist_ok=True)
+            self._trajectory = open(directory / "trajectory.jsonl", "a", encoding="utf-8")
+            self._events = open(directory / "web_events.jsonl", "a", encoding="utf-8")
+        except OSError as exc:
+            raise RecordWriteError(write_problem(directory, exc)) from exc
 
     def write_task(self, task_json: dict[str, Any]) -> None:
         self._write_json("task.json", task_json)
@@ -112,10 +147,13 @@ class EpisodeRecorder:
         with self._lock:
             if fh.closed:
                 return
-            fh.write(line + "\n")
-            # Flushed to the OS on every step, so a crash of the server loses nothing; no fsync, which
-            # would double the cost of a kitchen action for durability against power loss only.
-            fh.flush()
+            try:
+                fh.write(line + "\n")
+                # Flushed to the OS on every step, so a crash of the server loses nothing; no fsync, which
+                # would double the cost of a kitchen action for durability against power loss only.
+                fh.flush()
+            except OSError as exc:
+                raise RecordWriteError(write_problem(self.directory, exc)) from exc
 
     def step(
         self,
@@ -156,12 +194,15 @@ class EpisodeRecorder:
         if not images:
             return []
         folder = self.directory / "images"
-        folder.mkdir(exist_ok=True)
         names = []
-        for k, png in enumerate(images):
-            name = f"images/step-{index:04d}-{k}.png"
-            (self.directory / name).write_bytes(png)
-            names.append(name)
+        try:
+            folder.mkdir(exist_ok=True)
+            for k, png in enumerate(images):
+                name = f"images/step-{index:04d}-{k}.png"
+                (self.directory / name).write_bytes(png)
+                names.append(name)
+        except OSError as exc:
+            raise RecordWriteError(write_problem(self.directory, exc)) from exc
         return names
 
     def event(self, event: dict[str, Any]) -> None:
@@ -173,13 +214,23 @@ class EpisodeRecorder:
     def _write_json(self, name: str, payload: dict[str, Any]) -> None:
         # Write-then-rename: a reader never sees a half-written file.
         tmp = self.directory / f".{name}.tmp"
-        tmp.write_text(json.dumps(payload, indent=2, ensure_ascii=False, default=str), encoding="utf-8")
-        os.replace(tmp, self.directory / name)
+        try:
+            tmp.write_text(json.dumps(payload, indent=2, ensure_ascii=False, default=str), encoding="utf-8")
+            os.replace(tmp, self.directory / name)
+        except OSError as exc:
+            try:
+                tmp.unlink(missing_ok=True)  # never a half-written file beside the record
+            except OSError:
+                pass
+            raise RecordWriteError(write_problem(self.directory, exc)) from exc
 
     def close(self) -> None:
         with self._lock:
-            self._trajectory.close()
-            self._events.close()
+            for fh in (self._trajectory, self._events):
+                try:
+                    fh.close()
+                except OSError:
+                    pass  # its last buffered line could not be written: reported when it was appended
 
 
 def new_run_id() -> str:

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
-from collections.abc import Sized
+from collections.abc import Callable, Sized
 from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag, ValidationError, field_validator
@@ -323,16 +323,38 @@ class TaskFileError(ValueError):
 
 
 def load_task_file(path: Path) -> list[Task]:
-    """A task file holds one task object or a list of them."""
+    """A task file holds one task object or a list of them.
+
+    Raises TaskFileError, naming the file, the reason and the fix, for anything that is not a readable
+    UTF-8 JSON file of valid tasks: a directory named ``*.json``, an unreadable file, bytes that are not
+    UTF-8, JSON nested too deeply to parse, a schema violation."""
+    if path.is_dir():
+        raise TaskFileError(f"{path}: a directory named like a task file; rename it so it does not end in .json, "
+                            "or move it out of the task directory")
     try:
-        raw = json.loads(path.read_text(encoding="utf-8"))
+        text = path.read_text(encoding="utf-8")
+    except UnicodeDecodeError as exc:
+        raise TaskFileError(f"{path}: not UTF-8 text (byte {exc.start} is not valid UTF-8); save the file as "
+                            "UTF-8 JSON, or move it out of the task directory") from exc
+    except OSError as exc:
+        raise TaskFileError(f"{path}: cannot be read ({exc.strerror or type(exc).__name__}); make it a readable "
+                            "file, or move it out of the task directory") from exc
+    try:
+        raw = json.loads(text)
     except json.JSONDecodeError as exc:
         raise TaskFileError(f"{path}: not valid JSON ({exc.msg} at line {exc.lineno}); fix the file's syntax") from exc
+    except RecursionError as exc:
+        raise TaskFileError(f"{path}: JSON nested too deeply to read (a task is a few levels deep); fix or "
+                            "remove the file") from exc
     items = raw if isinstance(raw, list) else [raw]
     tasks = []
     for i, item in enumerate(items):
         try:
             tasks.append(Task.model_validate(item))
+        except RecursionError as exc:
+            where = f"{path}" + (f" item {i}" if isinstance(raw, list) else "")
+            raise TaskFileError(f"{where}: nested too deeply to be a task; fix or remove it "
+                                "(see docs/task.schema.json)") from exc
         except ValidationError as exc:
             where = f"{path}" + (f" item {i}" if isinstance(raw, list) else "")
             problems = "; ".join(
@@ -342,29 +364,48 @@ def load_task_file(path: Path) -> list[Task]:
     return tasks
 
 
-class TaskStore:
-    """All tasks under one or more directories, indexed by id."""
+def task_files(root: Path) -> list[Path]:
+    """Every ``*.json`` under ``root`` in a stable order (directories named so included: they are reported as
+    bad files). A root that is missing or unreadable holds none; a file that is one is one."""
+    root = Path(root)
+    if root.is_file():
+        return [root]
+    try:
+        return sorted(root.rglob("*.json"))
+    except OSError:
+        return []
 
-    def __init__(self, roots: list[Path]):
+
+class TaskStore:
+    """All tasks under one or more directories, indexed by id. A file that cannot be loaded is skipped and
+    reported in ``errors`` (its path, the reason and the fix); every good task is still served."""
+
+    def __init__(self, roots: list[Path], on_error: Callable[[str], None] | None = None):
         self.roots = roots
+        self.on_error = on_error  # told each skipped file once, when the tasks are first read (the server logs it)
         self._tasks: dict[str, Task] | None = None
         self.errors: list[str] = []
+        self.sources: dict[str, Path] = {}  # task id -> the file it was read from
 
     def _load(self) -> dict[str, Task]:
         if self._tasks is None:
             tasks: dict[str, Task] = {}
             for root in self.roots:
-                for path in sorted(root.rglob("*.json")):
+                for path in task_files(root):
                     try:
                         for task in load_task_file(path):
                             if task.id in tasks:
                                 self.errors.append(f"{path}: duplicate task id {task.id!r}; ids must be unique")
                                 continue
                             tasks[task.id] = task
+                            self.sources[task.id] = path
                     except TaskFileError as exc:
                         # One bad file must not take the whole suite down; it is reported instead.
                         self.errors.append(str(exc))
             self._tasks = tasks
+            if self.on_error is not None:
+                for err in self.errors:
+                    self.on_error(err)
         return self._tasks
 
     def add(self, task: Task) -> None:

@@ -21,6 +21,7 @@ class Session:
     start: Any
     log: list[dict[str, Any]] = field(default_factory=list)
     ended: bool = False
+    record_problem: str | None = None  # the server could not write the episode's record (a full disk)
 
     async def call(self, tool: str, args: dict[str, Any] | None = None) -> Any:
         payload = {"episode_id": self.episode_id, **(args or {})}
@@ -29,6 +30,13 @@ class Session:
         if isinstance(sc, dict) and sc.get("status") not in (None, "running"):
             self.ended = True
         self.log.append({"tool": tool, "ok": not result.is_error})
+        if result.is_error and self.record_problem is None:
+            from ..core.records import RECORD_WRITE_MARKER
+
+            text = " ".join(getattr(c, "text", "") for c in result.content)
+            if RECORD_WRITE_MARKER in text:
+                self.record_problem = text[text.index(RECORD_WRITE_MARKER):][:600]
+                self.ended = True
         return result
 
 

@@ -18,6 +18,7 @@ import anyio
 import httpx
 from mcp import Client, StdioServerParameters
 
+from ..core.records import RECORD_WRITE_MARKER
 from ..settings import child_server_env
 from ewa_mcp.core.taskmodel import Task, TaskStore
 
@@ -122,6 +123,7 @@ class EpisodeOutcome:
     errors: int = 0
     failure: str | None = None  # the episode could not be played at all
     seconds: float = 0.0
+    record_problem: str | None = None  # its record could not be written (a full disk): the run stops
 
 
 @dataclass
@@ -131,6 +133,7 @@ class EvalSummary:
     transport: str
     outcomes: list[EpisodeOutcome] = field(default_factory=list)
     seconds: float = 0.0
+    record_problem: str | None = None
 
 
 class Progress:
@@ -165,6 +168,8 @@ async def play_episode(client: Any, task: Task, agent: Any,
         start = await client.call_tool("start_episode", {"task_id": task.id})
         if start.is_error:
             outcome.failure = "start_episode: " + " ".join(getattr(c, "text", "") for c in start.content)
+            if RECORD_WRITE_MARKER in outcome.failure:
+                outcome.record_problem = outcome.failure[outcome.failure.index(RECORD_WRITE_MARKER):][:600]
             return outcome
         session = Session(client=client, task=task, episode_id=start.structured_content["episode_id"],
                           start=start)
@@ -176,6 +181,9 @@ async def play_episode(client: Any, task: Task, agent: Any,
             await session.call("finish_episode", {})
         outcome.calls = len(session.log)
         outcome.errors = sum(not entry["ok"] for entry in session.log)
+        if session.record_problem is not None:
+            outcome.record_problem = session.record_problem
+            outcome.failure = session.record_problem
     except Exception as exc:  # one broken episode must not end the run
         outcome.failure = f"{type(exc).__name__}: {exc}"
     finally:
@@ -203,6 +211,9 @@ async def run_eval(tasks: list[Task], agent: Any, *, transport: str = "inprocess
                 outcome = await play_episode(client, queue.pop(), agent)
                 summary.outcomes.append(outcome)
                 bar.tick(outcome)
+                if outcome.record_problem is not None:  # every episode after it would fail the same way
+                    summary.record_problem = summary.record_problem or outcome.record_problem
+                    queue.clear()
 
         async with anyio.create_task_group() as tg:
             for _ in range(concurrency):
@@ -212,9 +223,9 @@ async def run_eval(tasks: list[Task], agent: Any, *, transport: str = "inprocess
 
 
 def task_dirs_from(given: list[str] | None) -> list[Path]:
-    from ewa_mcp.core.paths import tasks_dir
+    from ..core.paths import task_dirs
 
-    return [Path(p) for p in given] if given else [tasks_dir()]
+    return [Path(p) for p in given] if given else task_dirs()  # every directory of EWA_TASKS_DIR=a:b
 
 
 def run_dir_from(given: str | None, prefix: str = "") -> Path:
@@ -245,12 +256,35 @@ def play(tasks: list[Task], agent: Any, *, run_dir: Path, task_dirs: list[Path],
     else:
         summary = anyio.run(lambda: run_eval(tasks, agent, transport=transport, concurrency=concurrency,
                                              run_dir=run_dir, task_dirs=task_dirs, progress=progress))
+    if summary.record_problem is not None:
+        raise record_stop(run_dir, summary.record_problem)
     failed = [o for o in summary.outcomes if o.failure]
     for o in failed[:10]:
         sys.stderr.write(f"  could not play {o.task_id}: {o.failure}\n")
     sys.stderr.write(f"played {len(summary.outcomes) - len(failed)}/{len(summary.outcomes)} episodes in "
                      f"{summary.seconds:.1f}s\n")
     return summary
+
+
+def record_stop(run_dir: Path, problem: str) -> EvalError:
+    """The one-line error that stops a run whose records can no longer be written (a full disk), after removing
+    every episode folder that is not whole (no final state, or one ended because its record failed)."""
+    import json
+    import shutil
+
+    kept = 0
+    for folder in sorted(run_dir.glob("ep-*")) if run_dir.is_dir() else []:
+        try:
+            final = json.loads((folder / "final_state.json").read_text(encoding="utf-8"))
+            whole = RECORD_WRITE_MARKER not in str(final.get("end_reason") or "")
+        except (OSError, ValueError):
+            whole = False
+        if whole:
+            kept += 1
+        else:
+            shutil.rmtree(folder, ignore_errors=True)
+    return EvalError(f"eval stopped: {problem.rstrip('. ')}. {run_dir} keeps the {kept} whole episodes recorded "
+                     "before; run the remaining tasks again once there is space")
 
 
 def play_from_args(tasks: list[Task], agent: Any, args: Any, *, run_dir: Path, task_dirs: list[Path],

@@ -6,6 +6,11 @@ outcomes and owns the run directory. A worker's server records into a staging fo
 run directory (an atomic move on one file system). So the run directory only ever holds episodes the driver
 accepted, each once: if a worker dies, its unfinished episodes are deleted from its staging folder and played
 again by another worker (a new one is started in its place).
+
+Nothing outlives the driver (lifeline.py): a SIGTERM or SIGHUP to the driver stops the run (``EvalInterrupted``)
+after its workers are stopped and the staging folder removed; each worker dies with the driver even when the
+driver is SIGKILLed (the kernel's parent-death signal), killing its Playwright driver, browser and renderers and
+removing its staging folder first.
 """
 
 from __future__ import annotations
@@ -15,7 +20,9 @@ import os
 import pickle
 import queue
 import shutil
+import signal
 import sys
+import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass, field
@@ -29,6 +36,18 @@ from .runner import EpisodeOutcome, EvalError, EvalSummary, Progress
 STAGING = ".staging"
 
 
+class RecordStop(Exception):
+    """A worker's episode record could not be written: the run stops (play() reports it in one line)."""
+
+
+class EvalInterrupted(Exception):
+    """The driver was asked to stop by a signal; its workers are stopped and nothing is left behind."""
+
+    def __init__(self, signum: int):
+        super().__init__(signal.Signals(signum).name)
+        self.signum = signum
+
+
 def check_picklable(agent: Any, where: str) -> bytes:
     try:
         return pickle.dumps(agent)
@@ -40,12 +59,15 @@ def check_picklable(agent: Any, where: str) -> bytes:
 
 
 def _worker_main(wid: int, agent_blob: bytes, transport: str, task_dirs: list[Path], staging: Path,
-                 concurrency: int, inbox: Any, outbox: Any) -> None:
+                 concurrency: int, inbox: Any, outbox: Any, parent_pid: int | None = None) -> None:
     """A worker process: one episode player, up to `concurrency` episodes at once, until it gets None."""
     import logging
 
+    from .lifeline import bind_to_parent
     from .player import EpisodePlayer
 
+    if parent_pid is not None:
+        bind_to_parent(staging, parent_pid)  # before any browser or driver is started
     # A tool error is part of the episode's record; the SDK's INFO line for each would interleave N streams.
     logging.basicConfig(level=logging.WARNING, stream=sys.stderr)
     try:
@@ -109,7 +131,7 @@ class _Driver:
         inbox = self.ctx.Queue()
         process = self.ctx.Process(target=_worker_main, name=f"ewa-eval-w{wid}", daemon=True,
                                    args=(wid, self.agent_blob, self.transport, self.task_dirs, staging,
-                                         self.concurrency, inbox, self.outbox))
+                                         self.concurrency, inbox, self.outbox, os.getpid()))
         process.start()
         self.workers[wid] = _Worker(wid, process, inbox, staging)
 
@@ -140,6 +162,9 @@ class _Driver:
             raise EvalError(f"an eval worker could not start: {message[2]}")
         elif kind == "done":
             slot, outcome = message[2], EpisodeOutcome(**message[3])
+            if outcome.record_problem is not None:  # a full disk: every episode after it would fail the same way
+                self.summary.record_problem = outcome.record_problem
+                raise RecordStop()
             if self.ledger.finish(wid, slot, outcome):
                 self.land(worker, outcome)
                 self.record(outcome)
@@ -199,6 +224,13 @@ class _Driver:
     def run(self) -> EvalSummary:
         self.run_dir.mkdir(parents=True, exist_ok=True)
         t0 = time.monotonic()
+        previous: dict[int, Any] = {}
+        if threading.current_thread() is threading.main_thread():
+            def interrupted(signum: int, _frame: Any) -> None:
+                raise EvalInterrupted(signum)
+
+            for sig in (signal.SIGTERM, signal.SIGHUP):
+                previous[sig] = signal.signal(sig, interrupted)
         try:
             for _ in range(min(self.size, len(self.tasks)) or 1):
                 self.spawn()
@@ -209,13 +241,23 @@ class _Driver:
                     pass
                 self.check_deaths()
             self.stop()
+        except RecordStop:
+            pass  # the workers are stopped below; the summary carries the problem
         finally:
+            for signum in previous:  # a second signal now would cut the cleanup short
+                signal.signal(signum, signal.SIG_IGN)
             for worker in self.workers.values():
                 if worker.process.is_alive():
-                    worker.process.terminate()
-                    worker.process.join(timeout=10)
+                    worker.process.terminate()  # the worker kills its browser tree (lifeline.py)
+            for worker in self.workers.values():
+                worker.process.join(timeout=10)
+                if worker.process.is_alive():
+                    worker.process.kill()
+                    worker.process.join(timeout=5)
             # What is left there was never accepted (an interrupted run): the run directory stays accepted-only.
             shutil.rmtree(self.staging_root, ignore_errors=True)
+            for signum, handler in previous.items():
+                signal.signal(signum, handler)
         self.summary.seconds = time.monotonic() - t0
         return self.summary
 

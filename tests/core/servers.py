@@ -17,8 +17,10 @@ def free_port() -> int:
         return s.getsockname()[1]
 
 
-def serve(tmp_path, *args: str, env: dict[str, str] | None = None) -> tuple[subprocess.Popen, int]:
-    """Start the server (runs under tmp_path/runs, no token from the caller's environment) and wait until it answers."""
+def serve(tmp_path, *args: str, env: dict[str, str] | None = None,
+          address: str = "127.0.0.1") -> tuple[subprocess.Popen, int]:
+    """Start the server (runs under tmp_path/runs, no token from the caller's environment) and wait until it answers
+    at ``address``."""
     port = free_port()
     environ = {k: v for k, v in os.environ.items() if k != "EWA_MCP_TOKEN"}
     environ.update({"EWA_RUNS_DIR": str(tmp_path / "runs"), **(env or {})})
@@ -27,7 +29,7 @@ def serve(tmp_path, *args: str, env: dict[str, str] | None = None) -> tuple[subp
     deadline = time.monotonic() + 60
     while True:
         try:
-            httpx.get(f"http://127.0.0.1:{port}/mcp", timeout=1)
+            httpx.get(f"http://{address}:{port}/mcp", timeout=1)
             return proc, port
         except httpx.TransportError:
             if proc.poll() is not None or time.monotonic() > deadline:

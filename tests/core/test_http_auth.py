@@ -102,3 +102,65 @@ def test_loopback_detection():
 
     assert all(map(is_loopback_host, ["127.0.0.1", "localhost", "::1", "[::1]", "127.0.0.2"]))
     assert not any(map(is_loopback_host, ["0.0.0.0", "::", "10.0.0.5", "example.org"]))
+
+
+def _post(address: str, port: int, **headers: str) -> httpx.Response:
+    return httpx.post(f"http://{address}:{port}/mcp", json=INITIALIZE, headers=dict(HEADERS, **headers), timeout=10)
+
+
+async def test_another_loopback_address_needs_the_token_and_checks_host_and_origin(tmp_path):
+    """127.0.0.2 is loopback but not a default bind: it gets a token like a remote bind, and a forged Host
+    (DNS rebinding) is refused even with the token."""
+    proc, port = serve(tmp_path, "--host", "127.0.0.2", address="127.0.0.2")
+    try:
+        printed: list[str] = []
+        while not printed or not (printed[-1].startswith("MCP endpoint") or printed[-1] == ""):
+            printed.append(proc.stderr.readline())
+        match = re.search(r"bearer token \(shown once[^)]*\): (\S+)", "".join(printed))
+        assert match, printed
+        token = match.group(1)
+        _assert_refused(_post("127.0.0.2", port), "no Authorization header")
+        bearer = f"Bearer {token}"
+        assert _post("127.0.0.2", port, Authorization=bearer).status_code == 200
+        forged = _post("127.0.0.2", port, Authorization=bearer, Host="attacker.example")
+        assert forged.status_code == 421 and "EWA_ALLOWED_HOSTS" in forged.json()["error_description"]
+        page = _post("127.0.0.2", port, Authorization=bearer, Origin="http://attacker.example")
+        assert page.status_code == 403 and "attacker.example" in page.json()["error_description"]
+        assert _post("127.0.0.2", port, Authorization=bearer, Origin=f"http://127.0.0.2:{port}").status_code == 200
+    finally:
+        stop(proc)
+
+
+async def test_host_and_origin_are_checked_past_loopback(tmp_path):
+    proc, port = serve(tmp_path, "--host", "0.0.0.0", "--allow-remote", "--token", TOKEN,
+                       env={"EWA_ALLOWED_HOSTS": "ewa.example.org"})
+    try:
+        bearer = f"Bearer {TOKEN}"
+        assert _post("127.0.0.1", port, Authorization=bearer).status_code == 200
+        assert _post("127.0.0.1", port, Authorization=bearer, Host=f"ewa.example.org:{port}").status_code == 200
+        assert _post("127.0.0.1", port, Authorization=bearer, Host="rebound.example").status_code == 421
+        assert _post("127.0.0.1", port, Authorization=bearer, Origin="https://evil.example").status_code == 403
+    finally:
+        stop(proc)
+
+
+async def test_a_forged_host_is_refused_on_the_default_bind(tmp_path):
+    proc, port = serve(tmp_path)
+    try:
+        assert _post("127.0.0.1", port).status_code == 200  # no token on the default bind
+        assert _post("127.0.0.1", port, Host="rebound.example").status_code == 421
+        assert _post("127.0.0.1", port, Origin="http://rebound.example").status_code == 403
+    finally:
+        stop(proc)
+
+
+def test_only_the_default_binds_go_without_a_token():
+    from ewa_mcp.http_serve import allowed_hosts, choose_token
+
+    for host in ("127.0.0.1", "localhost", "::1", "[::1]"):
+        assert choose_token(host, None) == (None, False)
+    for host in ("127.0.0.2", "127.1.2.3", "0.0.0.0", "::", "10.0.0.5"):
+        token, generated = choose_token(host, None)
+        assert generated and token and len(token) >= 32
+    assert "127.0.0.2" in allowed_hosts("127.0.0.2") and "rebound.example" not in allowed_hosts("127.0.0.2")
+    assert "[fd00::5]" in allowed_hosts("fd00::5")

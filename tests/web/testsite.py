@@ -69,6 +69,9 @@ document.getElementById('ping').addEventListener('click', () => fetch('/api/clic
 <button onclick="alert('Saved!')">Save</button></p>
 <p><a href='/download'>Get the price list</a> <a href='http://example.com/'>External site</a>
 <a href='http://169.254.169.254/latest/meta-data/'>Metadata</a> <a href='/redirect-out'>Redirect out</a></p>
+<form action='http://example.com/collect' method='post'><input type='hidden' name='x' value='1'>
+<button type='submit'>Send off-site</button></form>
+<p><button onclick="location.href='http://example.com/scripted'">Leave by script</button></p>
 """)
 
     async def offsite(request: Request) -> Response:
@@ -112,10 +115,59 @@ document.getElementById('ping').addEventListener('click', () => fetch('/api/clic
     async def redirect_out(request: Request) -> Response:
         return RedirectResponse("http://example.com/landing", status_code=302)
 
+    async def busy(request: Request) -> Response:
+        # A click that takes effect at once, then a page too busy to answer for ?ms= milliseconds (what a
+        # loaded machine looks like from the server): after the click (?when=after) or in its handler.
+        ms = int(request.query_params.get("ms", "4000"))
+        when = request.query_params.get("when", "after")
+        spin = f"const end = Date.now() + {ms}; while (Date.now() < end) {{}}"
+        work = f"setTimeout(() => {{ {spin} }}, 0);" if when == "after" else spin
+        return _page("Busy page", f"""<h1>Busy page</h1><p id='state'>Not clicked</p>
+<button onclick="document.getElementById('state').textContent = 'Clicked once'; document.title = 'Busy page (clicked)';
+{html.escape(work)}">Start work</button>""")
+
+    async def webrtc(request: Request) -> Response:
+        # A hostile page on an allowed origin: it tries to send UDP to a local port by WebRTC, both as
+        # a STUN/TURN server (ICE gathering) and as a remote candidate (connectivity checks), and
+        # by WebTransport (QUIC), and says in #done how far it got (candidates gathered, ICE state).
+        port = int(request.query_params.get("port", "9"))
+        return _page("WebRTC probe", f"""<h1>WebRTC probe</h1><p id='done'>running</p>
+<script>
+(async () => {{
+  const out = [];
+  try {{
+    const servers = [{{urls: 'stun:127.0.0.1:{port}'}},
+                     {{urls: 'turn:127.0.0.1:{port}?transport=udp', username: 'u', credential: 'p'}}];
+    const a = new RTCPeerConnection({{iceServers: servers}});
+    const b = new RTCPeerConnection();
+    a.onicecandidate = (e) => {{ if (e.candidate) out.push(e.candidate.candidate); }};
+    a.createDataChannel('probe');
+    await a.setLocalDescription(await a.createOffer());
+    await b.setRemoteDescription(a.localDescription);
+    await b.setLocalDescription(await b.createAnswer());
+    await a.setRemoteDescription(b.localDescription);
+    for (const ip of ['127.0.0.1', '::1']) {{
+      try {{ await a.addIceCandidate({{candidate: `candidate:1 1 udp 2122260223 ${{ip}} {port} typ host`,
+                                       sdpMid: '0', sdpMLineIndex: 0}}); }} catch (e) {{ out.push('add: ' + e); }}
+    }}
+    if (window.WebTransport) {{  // HTTP/3 over QUIC: UDP too
+      for (const host of ['127.0.0.1', '[::1]']) {{
+        try {{ const wt = new WebTransport(`https://${{host}}:{port}/`); wt.ready.catch(() => {{}});
+               wt.closed.catch(() => {{}}); }} catch (e) {{ out.push('webtransport: ' + e); }}
+      }}
+    }}
+    await new Promise((r) => setTimeout(r, 1500));
+    out.push('state ' + a.iceConnectionState);
+  }} catch (e) {{ out.push('error: ' + e); }}
+  document.getElementById('done').textContent = 'finished: ' + out.join(' | ');
+}})();
+</script>""")
+
     return Starlette(routes=[
         Route("/", index), Route("/item/{n:int}", item), Route("/search", search), Route("/counter", counter),
         Route("/api/click", api_click, methods=["POST"]), Route("/long", long_page), Route("/download", download),
-        Route("/redirect-out", redirect_out), Route("/offsite", offsite),
+        Route("/redirect-out", redirect_out), Route("/offsite", offsite), Route("/webrtc", webrtc),
+        Route("/busy", busy),
     ])
 
 

@@ -33,6 +33,13 @@ PLATFORM_FLAGS: tuple[str, ...] = (
     "--disable-sync",
 )
 
+# WebRTC may send UDP only through the proxy, which refuses everything (BrowserService): no WebRTC traffic at
+# all. The full browser and the headless shell each read one of these two spellings.
+WEBRTC_GUARD_FLAGS: tuple[str, ...] = (
+    "--webrtc-ip-handling-policy=disable_non_proxied_udp",
+    "--force-webrtc-ip-handling-policy=disable_non_proxied_udp",
+)
+
 # Debian's package "chromium-headless-shell": the headless-only build (what Playwright itself runs
 # headless). It loads and snapshots the sites' pages ~35 % faster than the full browser in
 # headless mode (benchmarks/bench_browser.py), so headless runs prefer it where it is installed.
@@ -155,7 +162,15 @@ class BrowserService:
     addresses, so another loopback port (this server's own HTTP port, any local service) and
     cloud metadata addresses are refused too. Being the browser's own network layer, it also
     covers redirects, sub-resources, popups and requests made by scripts, and it costs no
-    interception round trip per request (``context.route`` did: ewa_mcp/envs/browser/README.md)."""
+    interception round trip per request (``context.route`` did: ewa_mcp/envs/browser/README.md).
+
+    WebRTC does not ask the proxy: by default a page's RTCPeerConnection sends UDP (STUN, TURN,
+    connectivity checks to any candidate a script adds, mDNS) straight to any address. The WebRTC
+    IP handling policy ``disable_non_proxied_udp`` makes it use the proxy or nothing, and the proxy
+    refuses, so WebRTC reaches nothing. The full Chromium reads the policy from
+    ``--webrtc-ip-handling-policy``, the headless shell from ``--force-webrtc-ip-handling-policy``;
+    both are passed. WebTransport (QUIC) goes through the proxy resolution too and fails the same
+    way (tests/web/test_browser_guard.py sends both at a local UDP listener)."""
 
     def __init__(self, info: ChromiumInfo, headless: bool = True, allowed_origins: list[str] | tuple[str, ...] = (),
                  pool: ContextPool | None = None, collector: IdleCollector | None = None):
@@ -204,7 +219,7 @@ class BrowserService:
     def launch_args(self) -> list[str]:
         bypass = ["<-loopback>", *(bypass_rule(origin) for origin in self.allowed_origins)]
         return [*self.info.launch_args(), f"--proxy-server=http://127.0.0.1:{self._guard.getsockname()[1]}",
-                f"--proxy-bypass-list={';'.join(bypass)}"]
+                f"--proxy-bypass-list={';'.join(bypass)}", *WEBRTC_GUARD_FLAGS]
 
     def current_browser(self) -> Any | None:
         """The browser if it is up, else None; never launches one (for background work)."""

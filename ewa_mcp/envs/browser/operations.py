@@ -7,6 +7,7 @@ turn what went wrong into an error the agent can act on, and observe (observatio
 from __future__ import annotations
 
 import asyncio
+import re
 import time
 from typing import Any
 
@@ -18,7 +19,7 @@ from .aria import AriaNode
 from .observation import collect, observe, present
 from .tree_text import EDITABLE_ROLES
 from .safety import BlockedUrlError
-from .session import BrowserSession
+from .session import BrowserSession, PageBusyError
 from .settle import CHANGES_JS
 from .tabs import PAGE_INFO_JS, Tab, first_line, is_closed_error, locate, navigate, timeout_reason
 
@@ -31,6 +32,21 @@ SCROLL_JS = """(dir) => {
   window.scrollBy({left: dx, top: dy, behavior: 'instant'});
   return [x !== scrollX || y !== scrollY, Math.round(scrollY), document.documentElement.scrollHeight, innerHeight];
 }"""
+
+
+class NavigationRefused(EnvError):
+    """The action led the tab to a URL the guard refused (the tab was stepped back)."""
+
+
+def input_dispatched(exc: BaseException) -> bool:
+    """Whether Playwright's call log of a timed-out action shows the input was sent to the page ("performing
+    click action", "click action done") with no retry after it: the page then takes it in (a busy page
+    later), so the action happened even though Playwright gave up waiting for the page to confirm it."""
+    lines = [ln.strip(" -") for ln in str(exc).splitlines() if ln.strip().startswith("-")]
+    sent = [i for i, ln in enumerate(lines) if re.fullmatch(r"(performing \w+ action|\w+ action done)", ln)]
+    after = lines[sent[-1] + 1:] if sent else []
+    return bool(sent) and not any(ln.startswith(("retrying", "attempting")) or "intercepts pointer events" in ln
+                                  for ln in after)
 
 
 def describe(node: AriaNode, element_id: int) -> str:
@@ -58,9 +74,19 @@ class BrowserActions:
             except TimeoutError as exc:
                 raise EnvError(f"{action_name} did not finish within {limit:g} s; the page may be stuck in a "
                                "script. Try browser_goto to reload it") from exc
+            except PlaywrightTimeoutError as exc:
+                if not input_dispatched(exc):
+                    raise
+                # The input reached the page, which was too busy to confirm it in time: the action happened, and
+                # its result is what the agent must see (reporting a timeout would make it repeat the action).
+                return await self._observe_when_free(action_name)
             if not settle or tab.page.is_closed():
                 return await observe(s)
-            return await self._settle_and_observe(action_name, tab, mark, popups_before if popups else None)
+            try:
+                return await self._settle_and_observe(action_name, tab, mark, popups_before if popups else None)
+            except (PageBusyError, PlaywrightTimeoutError):
+                # The action is done; only reading the page afterwards ran out of time.
+                return await self._observe_when_free(action_name)
         except EnvError:
             raise
         except PlaywrightTimeoutError as exc:
@@ -82,7 +108,7 @@ class BrowserActions:
         for note in await tab.activity.navigation(mark, deadline):
             s.notice(note)
         if s.blocked_nav is not None:
-            await self._refuse_navigation(action_name, tab)
+            await self._refuse_navigation(action_name, tab, deadline)
         # The page is asked whether this action's work is done; its answer brings the page facts
         # and the DOM-change counter (settle.py), read when it answers, so that the snapshot taken
         # next is known to be at least that new. Most actions leave nothing running: one round trip.
@@ -105,9 +131,35 @@ class BrowserActions:
             collected = await collect(s, tab, want_image, known=(answer[0], answer[1], answered_generation))
         return await present(s, current, collected)
 
-    async def _refuse_navigation(self, action_name: str, tab: Tab) -> None:
+    async def _observe_when_free(self, action_name: str) -> Observation:
+        """The observation after an action that took effect while the page was too busy to be read in time:
+        the page once it answers (waiting up to the navigation timeout), with a notice saying so. Only when
+        it never answers is the result text alone, still saying the action was done."""
+        s = self.session
+        s.notice(f"{action_name} was done, but the page was too busy to be read at once (a script running, or a "
+                 "loaded machine); this is the page once it answered")
+        end = time.monotonic() + s.config.navigation_timeout_s
+        while True:
+            try:
+                return await observe(s)
+            except (PageBusyError, PlaywrightTimeoutError):
+                if time.monotonic() >= end:
+                    break
+        s.take_notices()
+        tab = s.current()
+        return Observation(
+            text=(f"{action_name} was done, but the page is still busy after {s.config.navigation_timeout_s:g} s "
+                  "and could not be read (a script may be stuck). Look again with get_observation, or reload it "
+                  "with browser_goto"),
+            data={"url": tab.page.url, "site_url": s.site_url(tab.page.url), "busy": True})
+
+    async def _refuse_navigation(self, action_name: str, tab: Tab, deadline: float) -> None:
         s = self.session
         url, s.blocked_nav = s.blocked_nav or "", None
+        # The refused request fails at once, but Chromium commits its error page for it a little later (a
+        # form's POST, or any navigation on a busy machine, after the action has settled): wait for that
+        # commit, so the tab is stepped back from the error page rather than left on it.
+        await self._error_page_committed(s.current(), deadline)
         s.notices = [n for n in s.notices if url[:120] not in n]
         current = s.current()
         if current is not tab and (current.page.url in ("about:blank", "")
@@ -128,9 +180,21 @@ class BrowserActions:
                 pass
             finally:
                 s.restoring = False
-        raise EnvError(f"{action_name} led to {url[:200]}, which is refused: only the embedded sites are "
+        raise NavigationRefused(f"{action_name} led to {url[:200]}, which is refused: only the embedded sites are "
                        f"reachable ({s.policy.describe_allowed() if s.policy else ''}); the page is "
                        "unchanged")
+
+    @staticmethod
+    async def _error_page_committed(tab: Tab, deadline: float) -> None:
+        page = tab.page
+        if page.is_closed() or page.url.startswith("chrome-error:"):
+            return
+        try:
+            await page.wait_for_event(
+                "framenavigated", predicate=lambda frame: frame == page.main_frame and frame.url.startswith(
+                    "chrome-error:"), timeout=max(500.0, (deadline - time.monotonic()) * 1000))
+        except PlaywrightError:
+            pass  # no error page came (the navigation was cancelled, or replaced by another): nothing to undo
 
     # ------------------------------------------------------------ element actions
     async def click(self, element: str) -> Observation:

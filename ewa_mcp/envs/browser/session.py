@@ -74,6 +74,10 @@ class Handovers:
         await self.drain()
 
 
+class PageBusyError(EnvError):
+    """The page did not answer in time (a script running, or a loaded machine); it may answer later."""
+
+
 class BrowserSession:
     """The state of one episode's browser and the context's lifecycle."""
 
@@ -318,8 +322,8 @@ class BrowserSession:
         try:
             return await asyncio.wait_for(awaitable, limit)
         except TimeoutError as exc:
-            raise EnvError(f"the page did not respond within {limit:g} s (a script may be stuck); try "
-                           "browser_goto to reload it, or another tab") from exc
+            raise PageBusyError(f"the page did not respond within {limit:g} s (a script may be stuck); try "
+                                "browser_goto to reload it, or another tab") from exc
 
     async def cdp(self, tab: Tab) -> Any:
         if tab.cdp is None:

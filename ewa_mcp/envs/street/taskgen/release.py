@@ -123,6 +123,9 @@ def read_annotations(path: Path) -> dict[str, Annotation]:
         raw = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
         raise ImportFormatError(f"annotations {path}: cannot read it as JSON ({exc})") from None
+    except RecursionError:
+        raise ImportFormatError(f"annotations {path}: JSON nested too deeply to read; it is not the release's "
+                                "annotation file (pass --annotations none to import without one)") from None
     if isinstance(raw, dict):
         return {str(k): parse_annotation(v) for k, v in raw.items()}
     if not isinstance(raw, list):
@@ -343,6 +346,9 @@ def import_file(path: Path, out: Path, annotations_path: Path | None = None, *, 
         raise ImportFormatError(f"{path}: cannot read it ({exc})") from None
     except json.JSONDecodeError as exc:
         raise ImportFormatError(f"{path}: not JSON ({exc}); if it is a Git LFS pointer, run git lfs pull") from None
+    except RecursionError:
+        raise ImportFormatError(f"{path}: JSON nested too deeply to read; it is not a release environment file "
+                                "(navi_env_merge_v1.json holds a few levels)") from None
     report = ImportReport()
     envs = []
     for label, env in environments(raw, path.stem):
@@ -365,6 +371,12 @@ def import_file(path: Path, out: Path, annotations_path: Path | None = None, *, 
     build = build_city(envs, city, f"Imported: {path.name}", report)
     book = PlaceBook(city, build)
     planned = plan(envs, build, annotations, report, book)
+    if not planned:  # write nothing: an empty city graph and task folder would only confuse a later serve
+        why = "; ".join(f"environment {s['environment']}: {s['reason']}" for s in report.skipped[:3])
+        raise ImportFormatError(f"{path}: none of its {report.environments_read} environments can become a task"
+                                + (f" ({why}{'; …' if len(report.skipped) > 3 else ''})" if why else
+                                   " (it holds none: give the release's navi_env_merge_v1.json)")
+                                + "; nothing was written")
     build.graph["places"] = book.places
     streets_dir, task_dir = out / "streets", out / "navigation" / city
     streets_dir.mkdir(parents=True, exist_ok=True)
@@ -446,8 +458,13 @@ def run_cli(paths: list[str], out: str | None, annotations: str | None) -> int:
               file=sys.stderr)
         return 2
     out_dir = Path(out) if out else default_out_dir()
+    if out_dir.exists() and not out_dir.is_dir():
+        print(f"error: the output {out_dir} is a file; import-ewa writes a directory (streets/ and navigation/): "
+              "give -o a directory that does not exist yet or is one", file=sys.stderr)
+        return 2
     ann = None if annotations in (None, "auto", "none") else Path(annotations)
     status = 0
+    imported = 0
     for p in paths:
         try:
             result = import_file(Path(p), out_dir, ann, find=annotations != "none")
@@ -455,8 +472,21 @@ def run_cli(paths: list[str], out: str | None, annotations: str | None) -> int:
             print(f"error: {exc}", file=sys.stderr)
             status = 2
             continue
+        except RecursionError:
+            print(f"error: {p}: nested too deeply to be a release environment file", file=sys.stderr)
+            status = 2
+            continue
+        except OSError as exc:  # the output cannot be written: every file after this one would fail the same way
+            print(f"error: cannot write the import under {out_dir}: {exc.strerror or exc} "
+                  f"({exc.filename or out_dir}); give -o a writable directory", file=sys.stderr)
+            return 2
+        imported += len(result.task_paths)
         print(render_report(Path(p), result), end="")
         print(json.dumps(counts(result)))
+    if status == 0 and imported == 0:
+        print("error: nothing was imported: no environment of the given files became a task (the report above "
+              "says why each was skipped)", file=sys.stderr)
+        return 1
     if status == 0:
         print(f"tasks and street graphs are in {out_dir}; run them with: ewa-mcp eval --tasks-dir {out_dir} "
               f"(or ewa-mcp serve --tasks-dir {out_dir})")
