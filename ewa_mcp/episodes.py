@@ -163,8 +163,13 @@ class EpisodeManager:
         needed = task.environment_names()
         classes = {kind: self.env_class(name) for kind, name in needed.items()}  # fail before creating anything
         episode_id = "ep-" + uuid.uuid4().hex[:12]
-        recorder = EpisodeRecorder(self.run_dir / episode_id)
-        recorder.write_task(task.model_dump(mode="json"))
+        try:
+            recorder = EpisodeRecorder(self.run_dir / episode_id)
+            recorder.write_task(task.model_dump(mode="json"))
+        except OSError as exc:  # the run directory went away or became read-only after the server started
+            raise EpisodeError(
+                f"cannot record the episode under {self.run_dir} ({exc.strerror or exc}); restart the server "
+                "with a writable run directory: --run-dir DIR, EWA_RUN_DIR=DIR or EWA_RUNS_DIR=DIR") from exc
         episode = Episode(id=episode_id, task=task, recorder=recorder, options=options, active=task.start.environment,
                           environment_names=dict(needed))
         self._starting[episode_id] = episode
