@@ -7,6 +7,7 @@ counts the step and appends the trajectory line — in that order, in one place.
 
 from __future__ import annotations
 
+import shutil
 import time
 import uuid
 from collections.abc import Awaitable, Callable
@@ -173,6 +174,7 @@ class EpisodeManager:
         episode = Episode(id=episode_id, task=task, recorder=recorder, options=options, active=task.start.environment,
                           environment_names=dict(needed))
         self._starting[episode_id] = episode
+        kind: EnvSide = task.start.environment
         try:
             for kind, cls in classes.items():
                 env = cls(episode, self.services)
@@ -184,8 +186,16 @@ class EpisodeManager:
                 with anyio.CancelScope(shield=True):
                     await env.close()
             recorder.close()
+            # An episode that never started leaves no record: the caller was told why, and a grader must not
+            # count it as the agent's failure (the eval records it as an infrastructure failure).
+            shutil.rmtree(recorder.directory, ignore_errors=True)
             if isinstance(exc, EnvError):
                 raise ToolError(str(exc)) from exc
+            if isinstance(exc, Exception):  # e.g. a browser that fails to launch: say so, not "Error executing"
+                first_line = (str(exc).strip().splitlines() or [""])[0][:300]
+                raise ToolError(f"the {needed.get(kind, kind)} environment could not start for task {task.id} "
+                                f"({type(exc).__name__}: {first_line}); nothing was recorded. This is a problem "
+                                "of the server's machine, not of the call: see the server's log") from exc
             raise
         if episode.active not in episode.environments and episode.environments:
             episode.active = next(iter(episode.environments))
@@ -344,7 +354,9 @@ class EpisodeManager:
                                     environment=None, requires=requires, ends="finished")
         return episode
 
-    async def _end(self, episode: Episode, status: Status, reason: str) -> None:
+    async def _end(self, episode: Episode, status: Status, reason: str, *, infrastructure: bool = False) -> None:
+        """End the episode and write its final state; ``infrastructure``: it was cut off by something other
+        than the agent (records.FinalState.infrastructure_failure)."""
         if episode.status != "running":
             return
         episode.status = status
@@ -375,6 +387,7 @@ class EpisodeManager:
                 "ended_at": datetime.fromtimestamp(episode.ended_at, UTC).isoformat(),
                 "wall_time_s": round(episode.ended_at - episode.started_at, 3),
                 "environments": env_states,
+                **({"infrastructure_failure": reason} if infrastructure else {}),
             }
         )
         for env in episode.environments.values():
@@ -398,5 +411,6 @@ class EpisodeManager:
         for episode in list(self._episodes.values()):
             if episode.status == "running":
                 async with episode.lock:
-                    await self._end(episode, "aborted", "the server shut down before the episode finished")
+                    await self._end(episode, "aborted", "the server shut down before the episode finished",
+                                    infrastructure=True)
 

@@ -59,6 +59,9 @@ def main_table(reports: list[RunReport]) -> Table:
     for domain in _all_domains(reports):
         aggs = [r.domains.get(domain) for r in reports]
         rows.append([domain, "Episodes", *(_episodes_cell(a) for a in aggs)])
+        if any(r.infrastructure.get(domain) for r in reports):
+            rows.append(["", "Not scored: infrastructure failures",
+                         *(str(r.infrastructure.get(domain, 0)) for r in reports)])
         for key, label in MAIN_METRICS:
             values = [getattr(a, key) if a is not None else None for a in aggs]
             if key == "answer_accuracy" and all(v is None for v in values):
@@ -68,6 +71,9 @@ def main_table(reports: list[RunReport]) -> Table:
             "n/a: no task of the domain has goals of that side.")
     if any(a.n_ungradable for r in reports for a in r.domains.values()):
         note += " *Episodes that could not be graded count as failures (see the problems list)."
+    if any(r.infrastructure for r in reports):
+        note += (" Infrastructure failures (the server shut down, a worker died, no browser) are not the agent's: "
+                 "they are left out of the episodes and every metric; resume the run to play them.")
     return Table("Results by domain", ["Domain", "Metric", *(r.label for r in reports)], rows, note)
 
 
@@ -160,6 +166,17 @@ def demo_table(reports: list[RunReport]) -> Table | None:
     return Table("Demo tasks (not part of the benchmark)", ["Metric", *(r.label for r in reports)], rows)
 
 
+def infrastructure_lines(reports: list[RunReport]) -> list[str]:
+    lines: list[str] = []
+    for r in reports:
+        if not r.infrastructure_failures:
+            continue
+        lines.append(f"{r.label}: {len(r.infrastructure_failures)} episode(s) not scored; first "
+                     f"{min(PROBLEMS_SHOWN, len(r.infrastructure_failures))}:")
+        lines.extend(f"  - {p}" for p in r.infrastructure_failures[:PROBLEMS_SHOWN])
+    return lines
+
+
 def problems_lines(reports: list[RunReport]) -> list[str]:
     lines: list[str] = []
     for r in reports:
@@ -216,6 +233,11 @@ def render(reports: list[RunReport], fmt: str) -> str:
             continue
         parts.append(as_text(section) if isinstance(section, Table) else
                      (section if fmt == "table" else f"### Geolocation\n\n{section}"))
+    infrastructure = infrastructure_lines(reports)
+    if infrastructure:
+        title = "Infrastructure failures (not scored)"
+        parts.append((f"{title}\n{'=' * len(title)}\n" if fmt == "table" else f"### {title}\n\n")
+                     + "\n".join(infrastructure))
     problems = problems_lines(reports)
     if problems:
         parts.append(("Problems\n========\n" if fmt == "table" else "### Problems\n\n") + "\n".join(problems))
