@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from . import __version__
+from .pipes import quiet_on_closed_pipe
 
 
 def _task_dirs_or_error(given: list[str] | None) -> list[Path] | None:
@@ -320,6 +321,7 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+@quiet_on_closed_pipe
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)

@@ -18,7 +18,7 @@ from pydantic import ValidationError
 from . import __version__
 from .core import registry
 from .core.episodes import EpisodeManager
-from .core.paths import runs_dir, task_dirs
+from .core.paths import check_run_dir, runs_dir, task_dirs
 from .core.records import new_run_id
 from .core.schemas import make_portable
 from .core.services import Services
@@ -82,7 +82,8 @@ class ServerConfig:
 def build_server(config: ServerConfig | None = None) -> tuple[MCPServer, EpisodeManager]:
     """The server, its episode manager and the shared services, all configured by one ``Settings``.
 
-    Raises ``SettingsError`` (naming the variable and the fix) when an EWA_* variable is invalid."""
+    Raises ``SettingsError`` (naming the variable and the fix) when an EWA_* variable is invalid or the run
+    directory cannot be written (ewa_mcp/core/paths.py: a read-only working directory falls back to a per-user one)."""
     config = config or ServerConfig()
     settings = config.resolved_settings()
     tasks = TaskStore(task_dirs(settings), on_error=lambda err: log.warning("skipped a task file: %s", err))
@@ -93,6 +94,7 @@ def build_server(config: ServerConfig | None = None) -> tuple[MCPServer, Episode
 
         use_street_data(streets)
     run_dir = settings.run_dir or (runs_dir(settings) / new_run_id())
+    check_run_dir(run_dir, settings)  # refused here, naming the setting, not at every start_episode
     services = Services(settings)
     episodes = EpisodeManager(tasks, run_dir, services, config.environments)
     # The embedded sites report per-episode events (orders, page views) through this sink.

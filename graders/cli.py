@@ -13,6 +13,8 @@ import argparse
 import sys
 from pathlib import Path
 
+from ewa_mcp.pipes import quiet_on_closed_pipe
+
 from .models import RunReport
 from .report import RunDirError, grade_run
 from .report_tables import render
@@ -57,6 +59,7 @@ def _labels(paths: list[Path]) -> list[str]:
     ]
 
 
+@quiet_on_closed_pipe
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     paths = [args.run_dir, *args.compare]

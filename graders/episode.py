@@ -199,7 +199,11 @@ def grade_record(record: EpisodeRecord, radius_m: float | None = None) -> Episod
         switches=switches,
         wall_time_s=wall,
         problems=problems,
+        infrastructure_failure=str(final["infrastructure_failure"])[:500] if final.get("infrastructure_failure")
+        else None,
     )
+    if result.infrastructure_failure is not None:
+        return result  # not the agent's doing: no error category, and the aggregates leave it out
     if overall is not True:
         outcome = Outcome(
             web_ok=web_success,

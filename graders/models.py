@@ -97,6 +97,9 @@ class EpisodeResult(BaseModel):
     wall_time_s: float | None
     error: ErrorClassification | None = None
     problems: list[str] = Field(default_factory=list)
+    infrastructure_failure: str | None = Field(
+        default=None, description="why the episode was cut off by something other than the agent (final_state.json); "
+        "such an episode is reported apart and never scored")
 
 
 class Proportion(BaseModel):
@@ -165,3 +168,7 @@ class RunReport(BaseModel):
     errors: dict[str, ErrorBreakdown] = Field(description="per domain, plus 'all' over every non-demo domain")
     episodes: list[EpisodeResult]
     problems: list[str] = Field(default_factory=list, description="every episode's problems, prefixed by its id")
+    infrastructure: dict[str, int] = Field(
+        default_factory=dict, description="per domain: episodes cut off by infrastructure (not scored, not in n)")
+    infrastructure_failures: list[str] = Field(
+        default_factory=list, description="each such episode: '<episode id> (<task id>): <reason>'")

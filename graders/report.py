@@ -50,10 +50,14 @@ def grade_run(run_dir: str | Path, radius_m: float | None = None, label: str | N
             else f"{root} is an episode directory; pass its parent (the run directory), or use grade_episode"
         )
     episodes = [_grade_safely(d, radius_m) for d in dirs]
-    scored = [e for e in episodes if _scored(e.domain)]
-    domains = sorted({e.domain for e in scored}, key=_domain_key)
-    by_domain = {d: [e for e in episodes if e.domain == d] for d in domains}
-    demo = [e for e in episodes if e.domain == "demo"]
+    # Episodes cut off by infrastructure (the server shut down, a worker died, no browser) are not the agent's
+    # failures: they are counted apart and left out of every aggregate and error table.
+    cut_off = [e for e in episodes if e.infrastructure_failure is not None]
+    played = [e for e in episodes if e.infrastructure_failure is None]
+    scored = [e for e in played if _scored(e.domain)]
+    domains = sorted({e.domain for e in episodes if _scored(e.domain)}, key=_domain_key)
+    by_domain = {d: [e for e in played if e.domain == d] for d in domains}
+    demo = [e for e in played if e.domain == "demo"]
     errors = {d: error_breakdown(eps) for d, eps in by_domain.items()}
     errors["all"] = error_breakdown(scored)
     problems = [f"{e.episode_id}: {p}" for e in episodes for p in e.problems]
@@ -70,6 +74,8 @@ def grade_run(run_dir: str | Path, radius_m: float | None = None, label: str | N
         errors=errors,
         episodes=episodes,
         problems=problems,
+        infrastructure={d: n for d in [*domains, "demo"] if (n := sum(e.domain == d for e in cut_off))},
+        infrastructure_failures=[f"{e.episode_id} ({e.task_id}): {e.infrastructure_failure}" for e in cut_off],
     )
 
 

@@ -9,6 +9,7 @@ from typing import Any
 
 from .aggregate import GEO_LEVELS
 from .answers import geo_module
+from .compare import comparisons
 from .errors import CATEGORIES, GROUP_LABELS
 from .models import DomainAggregate, MeanEstimate, Proportion, RunReport
 
@@ -54,21 +55,69 @@ def _all_domains(reports: list[RunReport]) -> list[str]:
     return seen
 
 
+def difference(first: Proportion | MeanEstimate | None, other: Proportion | MeanEstimate | None) -> str:
+    """other minus first, in percentage points ("-" when either is unknown)."""
+    if first is None or other is None or first.value is None or other.value is None:
+        return "-"
+    return f"{100 * (other.value - first.value):+.1f}"
+
+
+def difference_headers(reports: list[RunReport]) -> list[str]:
+    return [f"Δ {r.label} − {reports[0].label}" for r in reports[1:]]
+
+
 def main_table(reports: list[RunReport]) -> Table:
     rows: list[list[str]] = []
+    gaps = [""] * (len(reports) - 1)  # the difference columns of rows that have none
     for domain in _all_domains(reports):
         aggs = [r.domains.get(domain) for r in reports]
-        rows.append([domain, "Episodes", *(_episodes_cell(a) for a in aggs)])
+        rows.append([domain, "Episodes", *(_episodes_cell(a) for a in aggs), *gaps])
+        if any(r.infrastructure.get(domain) for r in reports):
+            rows.append(["", "Not scored: infrastructure failures",
+                         *(str(r.infrastructure.get(domain, 0)) for r in reports), *gaps])
         for key, label in MAIN_METRICS:
             values = [getattr(a, key) if a is not None else None for a in aggs]
             if key == "answer_accuracy" and all(v is None for v in values):
                 continue
-            rows.append(["", label, *(pct(v) if a is not None else "-" for a, v in zip(aggs, values))])
+            rows.append(["", label, *(pct(v) if a is not None else "-" for a, v in zip(aggs, values)),
+                         *(difference(values[0], v) for v in values[1:])])
     note = ("Percent with 95 % intervals: Wilson for accuracies, Student's t for the completion mean. "
             "n/a: no task of the domain has goals of that side.")
+    if len(reports) > 1:
+        note += (" Δ: the run's value minus the first run's, in percentage points, over each run's own episodes "
+                 "(the paired comparison below uses only the tasks both runs played).")
     if any(a.n_ungradable for r in reports for a in r.domains.values()):
         note += " *Episodes that could not be graded count as failures (see the problems list)."
-    return Table("Results by domain", ["Domain", "Metric", *(r.label for r in reports)], rows, note)
+    if any(r.infrastructure for r in reports):
+        note += (" Infrastructure failures (the server shut down, a worker died, no browser) are not the agent's: "
+                 "they are left out of the episodes and every metric; resume the run to play them.")
+    return Table("Results by domain", ["Domain", "Metric", *(r.label for r in reports), *difference_headers(reports)],
+                 rows, note)
+
+
+def p_text(p: float) -> str:
+    return "<0.001" if p < 0.001 else f"{p:.3f}"
+
+
+def paired_table(reports: list[RunReport]) -> Table | None:
+    """The paired comparison of each run with the first over the tasks both played (graders/compare.py)."""
+    if len(reports) < 2:
+        return None
+    rows = []
+    for c in comparisons(reports, _all_domains(reports)):
+        rows.append([c.domain, f"{c.other} vs {c.baseline}", str(c.shared_tasks), str(c.both_pass),
+                     str(c.only_baseline), str(c.only_other), str(c.neither),
+                     f"{100 * c.difference:+.1f}" if c.difference is not None else "-",
+                     p_text(c.p_value) if c.shared_tasks else "-"])
+    note = ("Overall success on the tasks both runs played (by task id; episodes cut off by infrastructure left "
+            "out). Δ: the compared run's accuracy minus the first run's, in percentage points. p: McNemar's exact "
+            "test (two-sided) of no difference, from the tasks only one of the two runs passed.")
+    duplicates = sum(c.duplicates for c in comparisons(reports, []) if c.domain == "all")
+    if duplicates:
+        note += f" {duplicates} task(s) were played more than once in a run; each is paired by its first episode."
+    return Table("Paired comparison over shared tasks (McNemar's exact test)",
+                 ["Domain", "Runs", "Shared tasks", "Both pass", "Only first run", "Only compared run", "Neither",
+                  "Δ accuracy", "p"], rows, note)
 
 
 def difficulty_table(reports: list[RunReport]) -> Table | None:
@@ -160,6 +209,17 @@ def demo_table(reports: list[RunReport]) -> Table | None:
     return Table("Demo tasks (not part of the benchmark)", ["Metric", *(r.label for r in reports)], rows)
 
 
+def infrastructure_lines(reports: list[RunReport]) -> list[str]:
+    lines: list[str] = []
+    for r in reports:
+        if not r.infrastructure_failures:
+            continue
+        lines.append(f"{r.label}: {len(r.infrastructure_failures)} episode(s) not scored; first "
+                     f"{min(PROBLEMS_SHOWN, len(r.infrastructure_failures))}:")
+        lines.extend(f"  - {p}" for p in r.infrastructure_failures[:PROBLEMS_SHOWN])
+    return lines
+
+
 def problems_lines(reports: list[RunReport]) -> list[str]:
     lines: list[str] = []
     for r in reports:
@@ -201,7 +261,8 @@ def render(reports: list[RunReport], fmt: str) -> str:
     """The report(s) as "table" (plain text), "markdown" or "json"."""
     if fmt == "json":
         payload: Any = reports[0].model_dump(mode="json") if len(reports) == 1 else {
-            "runs": [r.model_dump(mode="json") for r in reports]}
+            "runs": [r.model_dump(mode="json") for r in reports],
+            "comparisons": [c.model_dump(mode="json") for c in comparisons(reports, _all_domains(reports))]}
         return json.dumps(payload, indent=2, ensure_ascii=False)
     if fmt not in ("table", "markdown"):
         raise ValueError(f"unknown format {fmt!r}; use table, markdown or json")
@@ -209,13 +270,19 @@ def render(reports: list[RunReport], fmt: str) -> str:
     parts: list[str] = []
     heading = "Runs: " + ", ".join(f"{r.label} ({r.run_dir}, {r.n_episodes} episodes)" for r in reports)
     parts.append(heading if fmt == "table" else f"## ewa-grade report\n\n{heading}")
-    sections: list[Table | str | None] = [main_table(reports), difficulty_table(reports), navigation_table(reports),
+    sections: list[Table | str | None] = [main_table(reports), paired_table(reports), difficulty_table(reports),
+                                          navigation_table(reports),
                                           geolocation_section(reports), *error_tables(reports), demo_table(reports)]
     for section in sections:
         if section is None:
             continue
         parts.append(as_text(section) if isinstance(section, Table) else
                      (section if fmt == "table" else f"### Geolocation\n\n{section}"))
+    infrastructure = infrastructure_lines(reports)
+    if infrastructure:
+        title = "Infrastructure failures (not scored)"
+        parts.append((f"{title}\n{'=' * len(title)}\n" if fmt == "table" else f"### {title}\n\n")
+                     + "\n".join(infrastructure))
     problems = problems_lines(reports)
     if problems:
         parts.append(("Problems\n========\n" if fmt == "table" else "### Problems\n\n") + "\n".join(problems))

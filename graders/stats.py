@@ -112,3 +112,17 @@ def mean_t_interval(values: Sequence[float], lower: float = 0.0, upper: float = 
     var = math.fsum((v - mean) ** 2 for v in values) / (n - 1)
     half = student_t_quantile(1 - (1 - CONFIDENCE) / 2, n - 1) * math.sqrt(var / n)
     return mean, max(lower, min(mean - half, mean)), min(upper, max(mean + half, mean))
+
+
+def mcnemar_exact(only_first: int, only_second: int) -> float:
+    """Two-sided exact McNemar p-value for paired pass/fail outcomes: under "no difference" each discordant pair
+    (one run passed the task, the other failed it) is a fair coin, so the smaller discordant count is binomial
+    (b + c, 1/2). Concordant pairs carry no information about the difference; with no discordant pair p = 1."""
+    if only_first < 0 or only_second < 0:
+        raise ValueError(f"counts must be non-negative, got {only_first} and {only_second}")
+    n = only_first + only_second
+    if n == 0:
+        return 1.0
+    k = min(only_first, only_second)
+    tail = math.fsum(math.comb(n, i) for i in range(k + 1)) / 2.0 ** n
+    return min(1.0, 2.0 * tail)

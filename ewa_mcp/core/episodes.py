@@ -30,6 +30,11 @@ END_REASONS: dict[str, str] = {"finished": "the agent finished the episode"}
 ARG_LIMIT = 2000  # characters of one argument kept in the trajectory line of a refused call
 
 
+# What to do when the run directory cannot be written (it went away, became read-only or filled up).
+WRITABLE_RUN_DIR = ("restart the server with a writable run directory: --run-dir DIR, EWA_RUN_DIR=DIR or "
+                    "EWA_RUNS_DIR=DIR")
+
+
 class EpisodeError(ToolError):
     """A problem with the episode itself (unknown, finished, wrong environment)."""
 
@@ -260,16 +265,17 @@ class EpisodeManager:
         try:
             recorder = EpisodeRecorder(self.run_dir / episode_id)
         except RecordWriteError as exc:
-            raise EpisodeError(f"start_episode: nothing was started: {exc}") from exc
+            raise EpisodeError(f"start_episode: nothing was started: {exc}; {WRITABLE_RUN_DIR}") from exc
         try:
             recorder.write_task(task.model_dump(mode="json"))
         except RecordWriteError as exc:
             recorder.close()
             shutil.rmtree(self.run_dir / episode_id, ignore_errors=True)  # no folder without its task.json
-            raise EpisodeError(f"start_episode: nothing was started: {exc}") from exc
+            raise EpisodeError(f"start_episode: nothing was started: {exc}; {WRITABLE_RUN_DIR}") from exc
         episode = Episode(id=episode_id, task=task, recorder=recorder, options=options, active=task.start.environment,
                           environment_names=dict(needed), client=client)
         self._starting[episode_id] = episode
+        kind: EnvSide = task.start.environment
         try:
             for kind, cls in classes.items():
                 env = cls(episode, self.services)
@@ -281,8 +287,16 @@ class EpisodeManager:
                 with anyio.CancelScope(shield=True):
                     await env.close()
             recorder.close()
+            # An episode that never started leaves no record: the caller was told why, and a grader must not
+            # count it as the agent's failure (the eval records it as an infrastructure failure).
+            shutil.rmtree(recorder.directory, ignore_errors=True)
             if isinstance(exc, EnvError):
                 raise ToolError(str(exc)) from exc
+            if isinstance(exc, Exception):  # e.g. a browser that fails to launch: say so, not "Error executing"
+                first_line = (str(exc).strip().splitlines() or [""])[0][:300]
+                raise ToolError(f"the {needed.get(kind, kind)} environment could not start for task {task.id} "
+                                f"({type(exc).__name__}: {first_line}); nothing was recorded. This is a problem "
+                                "of the server's machine, not of the call: see the server's log") from exc
             raise
         if episode.active not in episode.environments and episode.environments:
             episode.active = next(iter(episode.environments))
@@ -459,7 +473,9 @@ class EpisodeManager:
                                     environment=None, requires=requires, ends="finished")
         return episode
 
-    async def _end(self, episode: Episode, status: Status, reason: str) -> None:
+    async def _end(self, episode: Episode, status: Status, reason: str, *, infrastructure: bool = False) -> None:
+        """End the episode and write its final state; ``infrastructure``: it was cut off by something other
+        than the agent (records.FinalState.infrastructure_failure)."""
         if episode.status != "running":
             return
         episode.status = status
@@ -490,6 +506,7 @@ class EpisodeManager:
                 "ended_at": datetime.fromtimestamp(episode.ended_at, UTC).isoformat(),
                 "wall_time_s": round(episode.ended_at - episode.started_at, 3),
                 "environments": env_states,
+                **({"infrastructure_failure": reason} if infrastructure else {}),
             }
         )
         try:
@@ -524,5 +541,6 @@ class EpisodeManager:
         for episode in list(self._episodes.values()):
             if episode.status == "running":
                 async with episode.lock:
-                    await self._end(episode, "aborted", "the server shut down before the episode finished")
+                    await self._end(episode, "aborted", "the server shut down before the episode finished",
+                                    infrastructure=True)
 

@@ -4,13 +4,21 @@ Read-only data ships inside the package: the task suites are installed as ``ewa_
 repository's ``tasks/``), so an installed ``ewa-mcp`` sees every task from any directory. In a checkout
 (or an editable install) the repository's ``tasks/`` is used directly. Nothing is ever written into the
 package: runs go under the working directory (``EWA_RUNS_DIR``), generated tasks to ``-o`` or ``./tasks``.
+
+A server started by an MCP client often runs in a directory it cannot write (``/`` on macOS, a read-only
+checkout). When no run directory is set (``--run-dir``, ``EWA_RUN_DIR``, ``EWA_RUNS_DIR``) and ``./runs``
+cannot be created, runs go to the per-user data directory (``$XDG_DATA_HOME/ewa-mcp/runs``, by default
+``~/.local/share/ewa-mcp/runs``). A directory that *is* set and cannot be written is refused with an error
+naming the setting: an explicit choice is honoured or reported, never silently replaced.
 """
 
 from __future__ import annotations
 
+import os
+import tempfile
 from pathlib import Path
 
-from ewa_mcp.settings import Settings, load_settings
+from ewa_mcp.settings import Settings, SettingsError, load_settings
 
 PACKAGE_DIR = Path(__file__).resolve().parents[1]  # ewa_mcp/
 # The checkout's root when running from one; in an installed wheel this is site-packages (never written).
@@ -56,10 +64,53 @@ def generated_tasks_dir(settings: Settings | None = None) -> Path:
     return REPO_ROOT / "tasks" if in_checkout() else Path.cwd() / "tasks"
 
 
+def user_data_dir() -> Path:
+    """The per-user data directory: $XDG_DATA_HOME/ewa-mcp, by default ~/.local/share/ewa-mcp."""
+    return Path(os.environ.get("XDG_DATA_HOME") or Path.home() / ".local" / "share") / "ewa-mcp"
+
+
+def unwritable_reason(path: Path) -> str | None:
+    """Why directory ``path`` cannot be created or written, or None when it can. Probed by creating (and
+    removing) a temporary directory in ``path`` or in its nearest existing parent: permission bits alone
+    do not tell (root passes them, a read-only mount does not), and the probe leaves nothing behind."""
+    probe = path
+    while not probe.exists():
+        if probe.parent == probe:
+            return f"no parent of {path} exists"
+        probe = probe.parent
+    if not probe.is_dir():
+        return f"{probe} is not a directory"
+    try:
+        tempfile.TemporaryDirectory(dir=probe, prefix=".ewa-write-probe-").cleanup()
+    except OSError as exc:
+        return f"{probe}: {exc.strerror or exc}"
+    return None
+
+
 def runs_dir(settings: Settings | None = None) -> Path:
-    """Where new runs are recorded: the runs_dir setting (EWA_RUNS_DIR), else ./runs."""
+    """Where new runs are recorded: the runs_dir setting (EWA_RUNS_DIR), else ./runs when it can be written,
+    else the per-user data directory's runs/."""
     settings = settings or load_settings()
-    return settings.runs_dir or Path.cwd() / "runs"
+    if settings.runs_dir:
+        return settings.runs_dir
+    local = Path.cwd() / "runs"
+    return local if unwritable_reason(local) is None else user_data_dir() / "runs"
+
+
+def check_run_dir(run_dir: Path, settings: Settings) -> None:
+    """Raise SettingsError, naming the setting that chose run_dir and the fix, unless run_dir can be written."""
+    reason = unwritable_reason(run_dir)
+    if reason is None:
+        return
+    fix = "set --run-dir DIR (or EWA_RUN_DIR=DIR, or EWA_RUNS_DIR=DIR for a folder of runs) to a writable directory"
+    if settings.run_dir is not None:
+        where = f"the run directory {run_dir} (--run-dir / EWA_RUN_DIR)"
+    elif settings.runs_dir is not None:
+        where = f"the run directory {run_dir} under EWA_RUNS_DIR={settings.runs_dir}"
+    else:
+        where = (f"the run directory {run_dir} (./runs is not writable here, so the per-user data directory "
+                 "was tried)")
+    raise SettingsError(f"episodes cannot be recorded: {where} cannot be created or written ({reason}); {fix}")
 
 
 def check_task_dirs(dirs: list[Path]) -> None:

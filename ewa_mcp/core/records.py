@@ -68,6 +68,10 @@ class FinalState(_Record):
     options: dict[str, Any] = Field(default_factory=dict)
     wall_time_s: float | None = None
     environments: dict[str, dict[str, Any]] = Field(default_factory=dict)
+    # Set when the episode was cut off by something other than the agent (the server shut down, its eval worker
+    # died, the environments could not start): graders report it apart and never score it; a resumed eval
+    # plays its task again.
+    infrastructure_failure: str | None = None
 
 
 class WebEvent(_Record):

@@ -136,23 +136,58 @@ class EvalSummary:
     record_problem: str | None = None
 
 
+def clock(seconds: float) -> str:
+    """A duration as m:ss, or h:mm:ss past an hour."""
+    seconds = max(0, int(round(seconds)))
+    hours, rest = divmod(seconds, 3600)
+    return f"{hours}:{rest // 60:02d}:{rest % 60:02d}" if hours else f"{rest // 60}:{rest % 60:02d}"
+
+
 class Progress:
-    def __init__(self, total: int, enabled: bool):
+    """Episodes done, infrastructure failures, time so far and the estimated time left, on stderr.
+
+    On a terminal: one line redrawn in place (a carriage-return frame per episode). Anywhere else (a log file, a
+    CI console, a pipe): a plain line per update, at most one every `interval` seconds plus the last, so logs
+    hold readable lines and no frames."""
+
+    def __init__(self, total: int, enabled: bool, stream: Any = None, interactive: bool | None = None,
+                 interval: float = 10.0):
         self.total, self.done, self.failed, self.enabled = total, 0, 0, enabled
+        self.stream = stream if stream is not None else sys.stderr
+        if interactive is None:
+            isatty = getattr(self.stream, "isatty", None)
+            interactive = bool(isatty and isatty())
+        self.interactive, self.interval = interactive, interval
         self.started = time.monotonic()
+        self.last_line = -float("inf")
+
+    def eta(self, elapsed: float) -> str:
+        if not self.done:
+            return "?"
+        return clock(elapsed / self.done * (self.total - self.done))
+
+    def status(self, elapsed: float) -> str:
+        return (f"{self.done}/{self.total} episodes · {self.failed} not played (infrastructure) · "
+                f"{clock(elapsed)} elapsed · ETA {self.eta(elapsed)}")
 
     def tick(self, outcome: EpisodeOutcome) -> None:
         self.done += 1
         self.failed += outcome.failure is not None
-        if self.enabled:
+        if not self.enabled:
+            return
+        now = time.monotonic()
+        elapsed = now - self.started
+        last = self.done == self.total
+        if self.interactive:
             width = 30
             filled = int(width * self.done / max(1, self.total))
-            elapsed = time.monotonic() - self.started
-            sys.stderr.write(f"\r[{'#' * filled}{'.' * (width - filled)}] {self.done}/{self.total} "
-                             f"episodes · {self.failed} failed to run · {elapsed:5.1f}s")
-            if self.done == self.total:
-                sys.stderr.write("\n")
-            sys.stderr.flush()
+            self.stream.write(f"\r[{'#' * filled}{'.' * (width - filled)}] {self.status(elapsed)} ")
+            if last:
+                self.stream.write("\n")
+        elif last or now - self.last_line >= self.interval:
+            self.last_line = now
+            self.stream.write(f"progress: {self.status(elapsed)}\n")
+        self.stream.flush()
 
 
 async def play_episode(client: Any, task: Task, agent: Any,
@@ -242,7 +277,17 @@ def play(tasks: list[Task], agent: Any, *, run_dir: Path, task_dirs: list[Path],
 
     workers > 1: that many processes, each with its own server, browser and sites (evaluation/workers.py);
     ray: actors on a Ray cluster (evaluation/ray_eval.py); otherwise this process. Each runs `concurrency`
-    episodes at a time."""
+    episodes at a time. A missing Chromium stops the run before the first episode (EvalError; on Ray the actors'
+    machines decide). Episodes that could not be played are written into run_dir as infrastructure failures
+    (evaluation/resume.py): the grader reports them apart and a resumed run plays them again."""
+    from .resume import record_infrastructure_failures
+
+    if not tasks:
+        return EvalSummary(run_dir=run_dir, agent=agent.name, transport=transport)
+    if ray is None:
+        from .preflight import check_browser
+
+        check_browser(tasks)
     if ray is not None:
         from .ray_eval import play_on_ray
 
@@ -259,10 +304,15 @@ def play(tasks: list[Task], agent: Any, *, run_dir: Path, task_dirs: list[Path],
     if summary.record_problem is not None:
         raise record_stop(run_dir, summary.record_problem)
     failed = [o for o in summary.outcomes if o.failure]
+    record_infrastructure_failures(run_dir, failed, tasks)
     for o in failed[:10]:
         sys.stderr.write(f"  could not play {o.task_id}: {o.failure}\n")
     sys.stderr.write(f"played {len(summary.outcomes) - len(failed)}/{len(summary.outcomes)} episodes in "
                      f"{summary.seconds:.1f}s\n")
+    if failed:
+        sys.stderr.write(f"{len(failed)} episode(s) not played to their end for reasons other than the agent "
+                         "(infrastructure failures): they are not scored; run the same command with "
+                         f"--run-dir {run_dir} to play just those again\n")
     return summary
 
 
@@ -290,11 +340,26 @@ def record_stop(run_dir: Path, problem: str) -> EvalError:
 def play_from_args(tasks: list[Task], agent: Any, args: Any, *, run_dir: Path, task_dirs: list[Path],
                    announce: Callable[[ScaleOptions], None] | None = None) -> EvalSummary:
     """``play`` with the command line's --transport, --workers, --concurrency, --ray* and --quiet (``ewa-mcp eval``
-    and the LLM agents' shared options); the scale options are checked first (EvalError names the fix)."""
+    and the LLM agents' shared options); the scale options are checked first (EvalError names the fix). A run
+    directory that already holds episodes is resumed: only the tasks missing or cut off there are played."""
+    from .resume import plan_resume, start_run
     from .scale import scale_options
 
     scale = scale_options(args)
+    plan = plan_resume(run_dir, tasks, agent.name)  # a run directory that exists is resumed
     if announce is not None:
         announce(scale)
-    return play(tasks, agent, run_dir=run_dir, task_dirs=task_dirs, transport=args.transport, workers=scale.workers,
-                concurrency=scale.concurrency, ray=scale.ray, progress=not args.quiet)
+    if message := plan.describe(run_dir, len(tasks)):
+        sys.stderr.write(message + "\n")
+    if scale.ray is None:
+        from .preflight import check_browser
+
+        check_browser(plan.to_play)  # before the run directory is touched
+    try:
+        start_run(run_dir, plan, agent.name)
+    except OSError as exc:  # a full or read-only disk before the first episode: one line, nothing half-made
+        from ..core.records import write_problem
+
+        raise record_stop(run_dir, write_problem(run_dir, exc)) from None
+    return play(plan.to_play, agent, run_dir=run_dir, task_dirs=task_dirs, transport=args.transport,
+                workers=scale.workers, concurrency=scale.concurrency, ray=scale.ray, progress=not args.quiet)
