@@ -26,7 +26,7 @@ from mcp.server.mcpserver.exceptions import ToolError
 from mcp_types import CallToolResult, TextContent
 from mcp_types import Tool as MCPTool
 
-from . import __version__
+from . import __version__, registry
 from .episodes import EpisodeManager
 
 # The control plane's tools: choosing and opening episodes is the harness's business, never the agent's.
@@ -120,10 +120,23 @@ class BoundServer(MCPServer):
             raise ToolError("the bound episode has not started yet")
         return self.episode_id
 
+    def _other_environments_modules(self) -> set[str]:
+        """The tool modules of environments this episode does not have (a geolocation episode lists no kitchen
+        tools: a smaller action space; a call to one is still forwarded, and refused as a step like anywhere)."""
+        specs = registry.environments()
+        mine = set(self.episodes.get(self._bound_id()).environment_names.values())
+        return {spec.tools for name, spec in specs.items() if spec.tools and name not in mine}
+
     async def list_tools(self) -> list[MCPTool]:
         tools = await self.full.list_tools()
-        return [tool.model_copy(update={"input_schema": unbind_schema(tool.input_schema)})
-                for tool in tools if tool.name not in CONTROL_TOOLS]
+        hidden = self._other_environments_modules()
+        out = []
+        for tool in tools:
+            info = self.full._tool_manager.get_tool(tool.name)
+            if tool.name in CONTROL_TOOLS or getattr(getattr(info, "fn", None), "__module__", None) in hidden:
+                continue
+            out.append(tool.model_copy(update={"input_schema": unbind_schema(tool.input_schema)}))
+        return out
 
     def _tool_input_schema(self, name: str) -> dict[str, Any] | None:
         if name in CONTROL_TOOLS:
