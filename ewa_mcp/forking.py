@@ -50,8 +50,9 @@ def _check_forkable(episode: Episode) -> None:
             )
         env = episode.environments.get(side)
         session = getattr(env, "session", None)
-        if name == "kitchen" and getattr(session, "backend", "sim") != "sim":
-            raise ForkError(f"episode {episode.id} runs its kitchen on the {session.backend} backend, whose state "
+        backend = getattr(session, "backend", "sim")
+        if name == "kitchen" and backend != "sim":
+            raise ForkError(f"episode {episode.id} runs its kitchen on the {backend} backend, whose state "
                             "lives in another process and cannot be forked; use the built-in simulator "
                             "(kitchen_backend='sim') for episodes you fork")
 

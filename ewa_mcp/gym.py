@@ -122,9 +122,9 @@ def _sample_value(schema: dict[str, Any], rng: np.random.Generator) -> Any:
         high = int(schema.get("maximum", low + 10))
         return int(rng.integers(low, min(high, low + 10) + 1))
     if kind == "number":
-        low = float(schema.get("minimum", -10.0))
-        high = float(schema.get("maximum", 10.0))
-        return round(float(rng.uniform(low, high)), 4)
+        lo = float(schema.get("minimum", -10.0))
+        hi = float(schema.get("maximum", 10.0))
+        return round(float(rng.uniform(lo, hi)), 4)
     if kind == "string":
         low = int(schema.get("minLength", 1))
         high = max(low, min(int(schema.get("maxLength", 12)), 12))

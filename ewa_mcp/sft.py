@@ -33,7 +33,6 @@ from mcp_types import CallToolResult, TextContent
 from .bound import BOUND_INSTRUCTIONS, BoundServer
 from .graders.episode import grade_episode, grade_record
 from .graders.rundir import episode_dirs, read_episode
-from .records import digest
 from .taskmodel import Task
 
 SKIPPED_TOOLS = {"start_episode", "fork_episode"}  # lines that are not the agent's calls
