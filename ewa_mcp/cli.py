@@ -64,6 +64,24 @@ def cmd_serve(args: argparse.Namespace) -> int:
     mcp, episodes = build_server(ServerConfig(settings=settings))
     print(f"ewa-mcp {__version__}: tasks from {', '.join(map(str, dirs))}; "
           f"episodes recorded under {episodes.run_dir}", file=sys.stderr)
+    if args.bind_task:
+        from .bound import BindError, BoundServer, parse_options
+
+        if episodes.tasks.get(args.bind_task) is None:
+            print(f"error: unknown task id {args.bind_task!r} for --bind-task; `ewa-mcp tasks list` shows the ids",
+                  file=sys.stderr)
+            return 2
+        try:
+            options = parse_options(args.episode_options)
+        except BindError as exc:
+            print(f"error: {exc}", file=sys.stderr)
+            return 2
+        # The agent plane of one episode of the task, started when the server starts (docs/training.md).
+        mcp = BoundServer(mcp, task_id=args.bind_task, options=options, own_services=True)
+        print(f"bound to one episode of {args.bind_task}: no list_tasks, start_episode or episode_id", file=sys.stderr)
+    elif args.episode_options:
+        print("error: --episode-options goes with --bind-task", file=sys.stderr)
+        return 2
     if settings.transport == "stdio":
         mcp.run("stdio")
     else:
@@ -233,6 +251,24 @@ def cmd_demo(args: argparse.Namespace) -> int:
     return run_demo()
 
 
+def cmd_export_sft(args: argparse.Namespace) -> int:
+    import anyio
+
+    from .sft import ExportError, export_run
+
+    out = Path(args.output)
+    try:
+        summary = anyio.run(lambda: export_run(Path(args.run_dir), out, include_failed=args.all))
+    except ExportError as exc:
+        print(f"ewa-mcp export-sft: error: {exc}", file=sys.stderr)
+        return 2
+    print(f"{summary.exported} episode(s) written to {out}; {summary.skipped_unsuccessful} unsuccessful left out"
+          + ("" if args.all else " (--all keeps them)"), file=sys.stderr)
+    for why in summary.not_replayable:
+        print(f"left out, did not replay as recorded: {why}", file=sys.stderr)
+    return 0
+
+
 def add_scale_arguments(p: argparse.ArgumentParser) -> None:
     """--workers, --concurrency and --ray (shared with the LLM agent examples)."""
     g = p.add_argument_group("scale", "where episodes run (docs/scaling.md)")
@@ -274,6 +310,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--tasks", dest="tasks", action="append", help=argparse.SUPPRESS)  # the 0.x spelling
     p.add_argument("--run-dir", metavar="DIR", help="where episodes are recorded (default: runs/<new id>)")
     p.add_argument("-v", "--verbose", action="store_const", const=True, default=None)
+    p.add_argument("--bind-task", metavar="TASK", help="serve one episode of TASK, started at once: its tools "
+                   "without episode_id, no list_tasks or start_episode (docs/training.md)")
+    p.add_argument("--episode-options", metavar="JSON", help="with --bind-task: start_episode options as JSON, "
+                   "e.g. '{\"observation\": \"both\"}'")
     p.set_defaults(func=cmd_serve)
 
     p = sub.add_parser("sites", help="serve the five embedded web sites for people to browse")
@@ -315,6 +355,13 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--run-dir", metavar="DIR")
     p.add_argument("--tasks-dir", action="append", metavar="DIR")
     p.set_defaults(func=cmd_play)
+
+    p = sub.add_parser("export-sft", help="a run's episodes as chat-format JSONL (messages + tools) for "
+                       "supervised fine-tuning (docs/training.md)")
+    p.add_argument("run_dir", metavar="RUN_DIR")
+    p.add_argument("-o", "--output", required=True, metavar="FILE", help="the JSONL file to write")
+    p.add_argument("--all", action="store_true", help="export failed episodes too (default: successful only)")
+    p.set_defaults(func=cmd_export_sft)
 
     p = sub.add_parser("demo", help="start the server in-process, play one episode, print what happened")
     p.set_defaults(func=cmd_demo)

@@ -522,6 +522,19 @@ class EpisodeManager:
                     pass
         episode.recorder.close()
 
+    async def abort(self, episode_id: str, reason: str) -> Episode:
+        """End a running episode from outside (a harness resetting or closing it); its record stays gradable."""
+        episode = self.get(episode_id)
+        async with episode.lock:
+            await self._end(episode, "aborted", reason)
+        return episode
+
+    def adopt(self, episode: Episode) -> None:
+        """Register an episode built outside ``start`` (a fork, ewa_mcp/forking.py) under its id."""
+        if episode.id in self._episodes:
+            raise EpisodeError(f"episode id {episode.id} is taken")
+        self._episodes[episode.id] = episode
+
     def emit_event(self, episode_id: str, event: dict[str, Any]) -> None:
         """Called by the embedded sites (any thread) to record a per-episode web event."""
         episode = self._episodes.get(episode_id) or self._starting.get(episode_id)
