@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 import unicodedata
+from functools import lru_cache
 
 # "1,454", "1 454" (also with no-break or thin spaces) and "1'454" all mean 1454; a separator
 # counts as digit grouping only when exactly three digits follow, so "3,5" and "1, 2" are untouched.
@@ -75,6 +76,11 @@ def _canonical_number(token: str) -> str:
 def tokens(text: str) -> list[str]:
     """The answer as comparable tokens: numbers canonical ("120.0" = "120", "1,454" = "1454"), words
     case- and accent-folded, "&" read as "and", other punctuation dropped except "%" and a word slash."""
+    return list(_tokens(text))
+
+
+@lru_cache(maxsize=65536)  # a task's distractors are read once per answer graded: hundreds of phrases
+def _tokens(text: str) -> tuple[str, ...]:
     folded = _fold(text).replace("&", " and ")
     out: list[str] = []
     for match in _TOKEN.finditer(folded):
@@ -82,7 +88,7 @@ def tokens(text: str) -> list[str]:
         if token == "/" and _per_slash(folded, match.start(), out):
             continue  # "24/7", "45 cal/serving", "151 m/495 ft": a rate or a conversion, not a choice of words
         out.append(_canonical_number(token) if token[0].isdigit() else token)
-    return out
+    return tuple(out)
 
 
 def _per_slash(folded: str, at: int, before: list[str]) -> bool:
