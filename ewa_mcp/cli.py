@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from . import __version__
+from .evaluation.heuristics import NAMES as HEURISTIC_NAMES
 from .pipes import quiet_on_closed_pipe
 
 
@@ -178,6 +179,7 @@ def cmd_tasks(args: argparse.Namespace) -> int:
 
 def cmd_eval(args: argparse.Namespace) -> int:
     from .evaluation.agents import NoopAgent, OracleAgent, RandomAgent, ReplayAgent, ReplayError, load_replay
+    from .evaluation.heuristics import heuristic_agent
     from .evaluation.runner import EvalError, play_from_args, run_dir_from, select_tasks, task_dirs_from
     from .graders import grade_run, render_report
     from .core.taskmodel import TaskStore
@@ -190,6 +192,8 @@ def cmd_eval(args: argparse.Namespace) -> int:
             if not args.replay:
                 raise EvalError("--agent replay needs a FILE: ewa-mcp eval --agent replay path/to/replay.jsonl")
             agent: Any = ReplayAgent(load_replay(Path(args.replay)))
+        elif args.agent in HEURISTIC_NAMES:
+            agent = heuristic_agent(args.agent)
         else:
             agent = {"oracle": OracleAgent, "noop": NoopAgent, "random": RandomAgent}[args.agent]()
         patterns = args.tasks
@@ -335,7 +339,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(func=cmd_tasks)
 
     p = sub.add_parser("eval", help="run an agent over tasks through the MCP server, then grade the run")
-    p.add_argument("--agent", choices=["oracle", "noop", "random", "replay"], default="oracle")
+    p.add_argument("--agent", choices=["oracle", "noop", "random", "replay", *HEURISTIC_NAMES], default="oracle",
+                   help="oracle, noop, random, replay FILE, or a heuristic agent (no model; docs/verified.md)")
     p.add_argument("replay", nargs="?", metavar="FILE", help="replay: a JSONL of tool calls or a run directory")
     p.add_argument("--tasks", action="append", metavar="GLOB", help="task id glob (repeatable)")
     p.add_argument("--domain", action="append", help="restrict to a domain (repeatable)")

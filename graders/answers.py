@@ -7,8 +7,9 @@ from typing import Any
 
 from ewa_mcp.core.taskmodel import AnswerNumbers, GeoAnswer, TextAnswer
 
+from .hours import schedule
 from .models import ConditionResult
-from .textnorm import HEDGES, KNOWN_UNITS, find_spans, is_number, normalize, number_value, tokens
+from .textnorm import HEDGES, KNOWN_UNITS, find_spans, is_number, non_value, normalize, number_value, tokens
 
 GEO_MODULE = "ewa_mcp.envs.geo.checks"
 
@@ -40,21 +41,26 @@ def commitment_problem(check: TextAnswer, answer: str) -> str | None:
 
     Each phrase (expected wording, distractor, context) is found as whole tokens; an occurrence lying
     inside a longer occurrence of another phrase is part of that phrase, not a mention of its own
-    ("Modernism" inside "Late Modernism"). What the expected and context occurrences leave over must
-    hold no hedge and no rival number."""
+    ("Modernism" inside "Late Modernism"). Where the check counts numbers, a phrase that is one number is
+    found only where that number is a value of the asked kind ("151" in "46 m (151 ft)" is feet, "1401"
+    in "1401 Chestnut Street" an address). Opening hours are also found by their schedule ("every day
+    from 6 am to 11:30 pm" names "daily 6:00-23:30"). What the expected and context occurrences leave
+    over must hold no hedge and no rival number."""
     toks = tokens(answer)
     found: list[tuple[int, int, str, str]] = []  # start, end, role, phrase
     for phrase in check.must_include:
         for wording in [phrase, *check.aliases.get(phrase, [])]:
-            found += [(a, b, "expected", phrase) for a, b in find_spans(toks, tokens(wording))]
+            found += [(a, b, "expected", phrase) for a, b in _spans(toks, wording, check.numbers, expected=True)]
     for phrase in check.distractors:
-        found += [(a, b, "distractor", phrase) for a, b in find_spans(toks, tokens(phrase))]
+        found += [(a, b, "distractor", phrase) for a, b in _spans(toks, phrase, check.numbers)]
     for phrase in check.context:
         found += [(a, b, "context", phrase) for a, b in find_spans(toks, tokens(phrase))]
     kept = [f for f in found
             if not any(g[0] <= f[0] and f[1] <= g[1] and g[1] - g[0] > f[1] - f[0] for g in found)]
+    said = schedule(answer)
     missing = [p for p in check.must_include
-               if tokens(p) and not any(f[2] == "expected" and f[3] == p for f in kept)]
+               if tokens(p) and not any(f[2] == "expected" and f[3] == p for f in kept)
+               and not (said is not None and said == schedule(p))]
     if missing:
         return "missing: " + ", ".join(repr(p) for p in missing)
     named = list(dict.fromkeys(f[3] for f in kept if f[2] == "distractor"))
@@ -63,7 +69,7 @@ def commitment_problem(check: TextAnswer, answer: str) -> str | None:
         return f"names other candidates too: {shown} (an answer must name only the expected one)"
     covered = {i for f in kept if f[2] in ("expected", "context") for i in range(f[0], f[1])}
     rest = [i for i in range(len(toks)) if i not in covered]
-    hedges = [toks[i] for i in rest if toks[i] in HEDGES]
+    hedges = [toks[i] for i in rest if toks[i] in HEDGES and not _conversion(toks, i, check.numbers)]
     hedges += [toks[i - 1] + "'t" for i in rest if toks[i] == "t" and i > 0 and toks[i - 1].endswith("n")]
     if hedges:
         return f"hedges or denies ({', '.join(repr(h) for h in dict.fromkeys(hedges))}); state one answer"
@@ -74,10 +80,38 @@ def commitment_problem(check: TextAnswer, answer: str) -> str | None:
     return None
 
 
-def is_rival(toks: list[str], i: int, rule: AnswerNumbers) -> bool:
-    """Whether the number at ``toks[i]`` is a value of the asked kind (its unit, its range)."""
+def _spans(toks: list[str], phrase: str, rule: AnswerNumbers | None, *,
+           expected: bool = False) -> list[tuple[int, int]]:
+    """Where the phrase is named; a one-number phrase only where the number is a value of the asked kind
+    (in its unit; for a rival, also not a price, an identifier or an address)."""
+    needle = tokens(phrase)
+    spans = find_spans(toks, needle)
+    if rule is not None and len(needle) == 1 and is_number(needle[0]):
+        spans = [(a, b) for a, b in spans if is_rival(toks, a, rule, expected=expected)]
+    return spans
+
+
+def _conversion(toks: list[str], i: int, rule: AnswerNumbers | None) -> bool:
+    """Whether the "or" at ``toks[i]`` introduces the same value in another unit ("46 m, or about 151 ft")."""
+    if toks[i] != "or" or rule is None:
+        return False
+    ahead = toks[i + 1:i + 4]
+    for j, tok in enumerate(ahead):
+        if is_number(tok):
+            unit = ahead[j + 1] if j + 1 < len(ahead) else (toks[i + 2 + j] if i + 2 + j < len(toks) else "")
+            return unit in KNOWN_UNITS and not is_rival(toks, i + 1 + j, rule)
+        if tok not in ("about", "approximately", "roughly", "around", "some", "nearly", "almost", "just", "over"):
+            return False
+    return False
+
+
+def is_rival(toks: list[str], i: int, rule: AnswerNumbers, *, expected: bool = False) -> bool:
+    """Whether the number at ``toks[i]`` is a value of the asked kind (its unit, its range; never a price,
+    an identifier or an address, unless it is the expected value, which stands where the answer puts it)."""
     value = number_value(toks[i])
     if (rule.low is not None and value < rule.low) or (rule.high is not None and value > rule.high):
+        return False
+    if not expected and non_value(toks, i):
         return False
     after = toks[i + 1:]
     for unit in rule.units:

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
+from ..graders.hours import schedule
 from ..graders.textnorm import tokens
 from ewa_mcp.core.taskmodel import AnswerNumbers, TextAnswer
 
@@ -33,9 +34,11 @@ def committed_answer(expected: str, distractors: Iterable[str], *, aliases: Iter
                      context: Iterable[str] = (), numbers: AnswerNumbers | None = None) -> TextAnswer:
     """A check passing a short answer that names ``expected`` (or an alias) and no distractor."""
     own = _key(expected)
+    hours = schedule(expected)
     others: dict[tuple[str, ...], str] = {}
     for d in distractors:
-        if _key(d) and _key(d) != own:
+        # Hours that state the same schedule read the same ("daily 9:00-17:00 (timed tickets)").
+        if _key(d) and _key(d) != own and (hours is None or schedule(d) != hours):
             others.setdefault(_key(d), d)
     kept_aliases = list(dict.fromkeys(a for a in aliases if _key(a) and _key(a) != own and _key(a) not in others))
     kept_context = list(dict.fromkeys(c for c in context if _key(c) and _key(c) not in others

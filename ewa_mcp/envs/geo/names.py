@@ -199,7 +199,14 @@ def cities_match(answer: str, truth: str, country: str, lat: float, lng: float) 
     if not squash(answer):
         return False
     accepted = city_names(truth, country, round(lat, 4), round(lng, 4))
-    return bool(_city_variants(answer) & accepted)
+    if _city_variants(answer) & accepted:
+        return True
+    # "Paris, France" in the city field is the city: what follows the first comma may only name the
+    # answer's own country; "Paris, Texas" stays wrong.
+    head, _, tail = answer.partition(",")
+    if not squash(head) or not all(countries_match(part, country) for part in tail.split(",") if squash(part)):
+        return False
+    return bool(_city_variants(head) & accepted)
 
 
 # ------------------------------------------------------------------------------ streets

@@ -146,20 +146,26 @@ def size_unit(label: str) -> str | None:
     return " ".join(unit) if unit[0] in ("fl", "sq") and len(unit) == 2 else unit[0]
 
 
-def size_answer(product: Any, label: str, context: list[str]) -> TextAnswer:
-    """The size asked for, told apart from the product's other sizes and any other amount in its unit."""
+def size_aliases(label: str) -> tuple[list[str], list[str]]:
+    """(aliases, units) of a size label: "29 ounces" for "29 oz", "1 litre" for "1 L"."""
     unit = size_unit(label)
+    if unit is None:
+        return [], []
     toks = tokens(label)
-    aliases: list[str] = []
-    units: list[str] = []
-    if unit is not None:
-        units = [unit, *UNIT_WORDS.get(unit, [])]
-        at = next(i for i in range(len(toks)) if " ".join(toks[i:i + len(unit.split())]) == unit and i > 0
-                  and is_number(toks[i - 1]))
-        quantity = toks[:at]
-        aliases = [" ".join([*quantity, u]) for u in units]
-    return committed_answer(label, [s.label for s in product.sizes if s.label != label], aliases=aliases,
-                            context=[product.name, *context],
+    units = [unit, *UNIT_WORDS.get(unit, [])]
+    at = next(i for i in range(len(toks)) if " ".join(toks[i:i + len(unit.split())]) == unit and i > 0
+              and is_number(toks[i - 1]))
+    quantity = toks[:at]
+    return [" ".join([*quantity, u]) for u in units], units
+
+
+def size_answer(product: Any, label: str, context: list[str]) -> TextAnswer:
+    """The size asked for, told apart from the product's other sizes (in every wording) and any other
+    amount in its unit."""
+    aliases, units = size_aliases(label)
+    others = [s.label for s in product.sizes if s.label != label]
+    rivals = [*others, *(a for o in others for a in size_aliases(o)[0])]
+    return committed_answer(label, rivals, aliases=aliases, context=[product.name, *context],
                             numbers=AnswerNumbers(units=units, bare=False) if units else None)
 
 

@@ -3,11 +3,12 @@ look it up on the wiki, and answer a question whose answer is in the wiki."""
 
 from __future__ import annotations
 
+import re
+from functools import lru_cache
 from typing import Any
 
-from functools import lru_cache
 
-from ewa_mcp.graders.textnorm import contains_phrase, tokens
+from ewa_mcp.graders.textnorm import contains_phrase, find_spans, tokens
 from ..world import get_world
 from ewa_mcp.core.taskmodel import PageVisited, ReachedPlace, StartState, StreetStart, Task, WebStart
 from ewa_mcp.websites.wiki import store as wiki
@@ -65,26 +66,90 @@ def vocabulary(key: str) -> tuple[str, ...]:
     return tuple(sorted(v for v in values if v))
 
 
+_FIRM_WORDS = ("&", " and ", "+", " with ", "Co.", "Company", "Partners", "Associates", "Studio", "Workshop")
+
+
+def _is_person(name: str) -> bool:
+    """One person's name: at least two words, no team or firm words, no digits or brackets."""
+    return (len(tokens(name)) >= 2 and not any(w in f" {name} " for w in _FIRM_WORDS) and "," not in name
+            and "(" not in name and not any(ch.isdigit() for ch in name))
+
+
+def _is_firm(name: str) -> bool:
+    return not any(ch.isdigit() for ch in name) and name[:1].isupper() and any(w in f" {name} " for w in _FIRM_WORDS)
+
+
+def _parts(value: str) -> list[str]:
+    """The names of a value listing several ("A (1847); B (tower, 1915)"), without their brackets."""
+    return [re.sub(r"\s*\([^)]*\)", "", part).strip(" ,;:") for part in value.split(";")]
+
+
+def names_of(key: str, value: str) -> tuple[list[str], list[str]]:
+    """(aliases, related) of one candidate value: aliases are other real names of the value itself
+    ("Henry Hobson Richardson" for "H. H. Richardson", the firm in "Charles McKim (McKim, Mead & White)",
+    "Châteauesque" in "French Renaissance (Châteauesque)", the names without the brackets); related are
+    names the wiki files with it that name someone or something else (a partner, a firm of a person).
+    Brackets that qualify ("(planting)", "(tower, 1915)", "(2004 expansion)") are never names."""
+    aliases: list[str] = []
+    related: list[str] = []
+    parts = _parts(value)
+    base = parts[0] if len(parts) == 1 else ""
+    if len(parts) > 1:
+        aliases += [" ".join(parts), " and ".join(parts), ", ".join(parts[:-1]) + " and " + parts[-1]]
+    elif base != value:
+        aliases.append(base)
+    inner = re.findall(r"\(([^)]*)\)", value)
+    if len(parts) == 1 and len(inner) == 1:
+        word = inner[0].strip()
+        if key == "architect" and _is_firm(word):
+            aliases.append(word)
+        elif key == "architectural_style" and word[:1].isupper() and not any(ch.isdigit() for ch in word):
+            aliases.append(word)
+    if key == "architect":
+        own = base or value
+        article = wiki.find(own)
+        if article is not None and article.group == "architects":
+            surname = tokens(own)[-1:] if _is_person(own) else None
+            for name in [article.title, *article.aliases]:
+                if tokens(name) == tokens(own):
+                    continue
+                if surname and _is_person(name) and tokens(name)[-1:] == surname:
+                    aliases.append(name)  # the same person spelled out: "Daniel Hudson Burnham"
+                else:
+                    related.append(name)  # a partner, the firm of a person, a team
+    keep = [a for a in dict.fromkeys(aliases) if tokens(a) and tokens(a) != tokens(value)]
+    return keep, [r for r in dict.fromkeys(related) if r not in keep]
+
+
 def answer_check(key: str, answer: str) -> Any:
     """The committed-answer check of one question, or None when no short answer can be told apart from
     the other candidates (a value such as "Modernism (green skyscraper)" whose plain form, "Modernism",
-    is itself another candidate)."""
+    is itself another candidate). The distractors are every other candidate with each of its aliases
+    and related names, so naming another candidate in any of its spellings fails."""
     others = [v for v in vocabulary(key) if tokens(v) != tokens(answer)]
     other_keys = {tuple(tokens(v)) for v in others}
-    aliases: list[str] = []
-    base = answer.split("(")[0].strip(" ,;:")
-    if base != answer:
-        if tuple(tokens(base)) in other_keys:
-            return None
-        aliases.append(base)
-        if key == "architect":
-            aliases.append(answer[answer.index("(") + 1:].rstrip(")").strip())
-    if key == "architect":
-        article = wiki.find(base)
-        if article is not None and article.group == "architects":
-            aliases += [article.title, *article.aliases]
-    aliases = [a for a in aliases if tuple(tokens(a)) not in other_keys]
-    return committed_answer(answer, others, aliases=aliases, numbers=NUMBERS.get(key))
+    aliases, related = names_of(key, answer)
+    base = _parts(answer)[0]
+    if len(_parts(answer)) == 1 and base != answer and tuple(tokens(base)) in other_keys:
+        return None
+    rival_names: list[str] = []
+    rival_keys: set[tuple[str, ...]] = set()  # what names another candidate itself (not its partners)
+    for other in others:
+        other_aliases, other_related = names_of(key, other)
+        rival_names += [other, *other_aliases, *other_related]
+        rival_keys |= {tuple(tokens(n)) for n in (other, *other_aliases)}
+    # An alias that is also another candidate's name would let one answer pass two questions: it may be
+    # repeated, but it does not name the answer.
+    shared = [a for a in aliases if tuple(tokens(a)) in rival_keys]
+    aliases = [a for a in aliases if a not in shared]
+    own = {tuple(tokens(answer)), *(tuple(tokens(a)) for a in aliases)}
+    rival_names = [n for n in rival_names if tuple(tokens(n)) not in own]
+    # A rival that is part of the answer ("Arthur Gilman" in "Gridley J. F. Bryant and Arthur Gilman") may be
+    # repeated with it; alone it does not name the answer.
+    inside = [n for n in rival_names if find_spans(tokens(answer), tokens(n))]
+    rival_names = [n for n in rival_names if n not in inside]
+    return committed_answer(answer, rival_names, aliases=aliases, context=[*related, *shared, *inside],
+                            numbers=NUMBERS.get(key))
 
 
 def start_place(world: Any, target: Any, rng: Any, max_m: float = MAX_M) -> tuple[Any, Any] | None:
