@@ -219,3 +219,34 @@ def test_without_egl_the_error_names_the_packages(monkeypatch):
     with pytest.raises(camera3d.CameraUnavailable, match="libegl1 libgl1-mesa-dri libegl-mesa0") as info:
         frame(s)
     assert "kitchen_view='map'" in str(info.value) and "eglInitialize failed" in str(info.value)
+
+
+@pytest.mark.anyio
+@pytest.mark.parametrize("observation", ["vision", "both"])
+async def test_the_planner_oracle_plays_in_vision_modes(tmp_path: Path, monkeypatch, observation):
+    """The oracle's tool calls name handles, which work whatever the agent sees: every call succeeds and the
+    recipe's end state is reached, with a frame in every reply."""
+    from ewa_mcp.indoor.planner import plan_ops
+
+    monkeypatch.delenv("EWA_KITCHEN_BACKEND", raising=False)
+    tasks = tmp_path / "tasks"
+    tasks.mkdir()
+    start = {"environment": "embodied", "embodied": {"kind": "kitchen", "scene": "FloorPlan12", "seed": 0}}
+    (tasks / "k.json").write_text(json.dumps([{"id": "k-1", "domain": "cooking", "intent": "Fry tomato slices",
+                                               "start": start, "step_limit": 200}]))
+    mcp, _ = build_server(ServerConfig(task_dirs=[tasks], run_dir=tmp_path / "runs",
+                                       environments={"kitchen": KitchenEnvironment}))
+    ops = [{"op": "slice", "object": "Tomato"}, {"op": "cook", "object": "TomatoSliced", "method": "stove"},
+           {"op": "put", "object": "TomatoSliced", "receptacle": "Plate"}]
+    async with Client(mcp) as client:
+        r = await client.call_tool("start_episode", {"task_id": "k-1", "options": {"observation": observation}})
+        ep = r.structured_content["episode_id"]
+        for call in plan_ops("FloorPlan12", ops):
+            r = await client.call_tool(call["tool"], {"episode_id": ep, **call["args"]})
+            assert not r.is_error and r.content[-1].type == "image", (call, r.content[0].text)
+        await client.call_tool("finish_episode", {"episode_id": ep})
+    objects = json.loads((tmp_path / "runs" / ep / "final_state.json").read_text())["environments"]["embodied"][
+        "objects"]
+    by_id = {o["objectId"]: o for o in objects}
+    assert any(o["objectType"] == "TomatoSliced" and o["isCooked"]
+               and by_id[o["parentReceptacles"][0]]["objectType"] == "Plate" for o in objects)
