@@ -1,5 +1,5 @@
 # Two commands on a fresh machine: `make run` (the main job on the embedded defaults) and
-# `make test`. Both create .venv, install the project and make sure a Chromium exists.
+# `make test`. Both create .venv, install the project and make sure a Chromium and OpenGL through EGL exist.
 SHELL := /bin/bash
 PYTHON ?= python3
 VENV ?= .venv
@@ -8,14 +8,14 @@ STAMP := $(VENV)/.ewa-installed
 
 LOCK := requirements.lock
 
-.PHONY: run test lint install lock chromium bench clean
+.PHONY: run test lint install lock chromium egl bench clean
 
 # The main job on the embedded defaults: the oracle plays a deterministic sample of every domain
 # through the real MCP server, then the run is graded and the paper-shaped table printed.
-run: install chromium
+run: install chromium egl
 	$(BIN)/ewa-mcp eval --agent oracle --sample 3 --workers 2
 
-test: install chromium lint
+test: install chromium egl lint
 	$(BIN)/pytest
 
 # Bug-finding lint rules, the type checker and the import contracts, all configured in pyproject.toml.
@@ -54,7 +54,11 @@ chromium:
 	@scripts/ensure-chromium.sh
 	@scripts/ensure-fonts.sh
 
-bench: install chromium
+# Mesa's EGL and OpenGL drivers for the first-person kitchen camera (CPU rendering where no GPU driver is).
+egl:
+	@scripts/ensure-egl.sh
+
+bench: install chromium egl
 	for script in benchmarks/bench_*.py; do echo "== $$script"; $(BIN)/python $$script || exit 1; done
 
 clean:

@@ -16,6 +16,11 @@ class EpisodeOptions(BaseModel):
     kitchen_backend: Literal["sim", "ai2thor"] | None = Field(
         None, description="indoor backend (default: EWA_KITCHEN_BACKEND or the built-in simulator)"
     )
+    kitchen_view: Literal["first_person", "map"] | None = Field(
+        None, description="kitchen image in vision/both modes: first_person (default, AI2-THOR's camera) or map "
+                          "(the labelled top-down plan)")
+    kitchen_camera_width: int | None = Field(None, ge=64, le=1024, description="kitchen camera width (default 300)")
+    kitchen_camera_height: int | None = Field(None, ge=64, le=1024, description="kitchen camera height (default 300)")
     geolocation_setting: Literal["baseline", "embodied"] | None = Field(
         None, description="override the geolocation task's setting"
     )

@@ -10,11 +10,13 @@ import anyio
 from ewa_mcp.core.environment import EnvError, Environment, Observation
 from .backends import backend_name, make_controller
 from .observe import build_observation
+from .camera3d import DEFAULT_SIZE, CameraUnavailable, check_size, render_png
 from .kitchen_map import frame_png, png_bytes, render_topdown
 from .scenes import SceneError, canonical_scene
 from .session import ActionReport, KitchenSession
 
 OBSERVATION_MODES = ("text", "vision", "both")
+KITCHEN_VIEWS = ("first_person", "map")
 
 
 class KitchenEnvironment(Environment):
@@ -26,6 +28,9 @@ class KitchenEnvironment(Environment):
         self.services = services
         self.session: KitchenSession | None = None
         self.mode = "text"
+        self.view = "first_person"
+        self.camera_size = (DEFAULT_SIZE, DEFAULT_SIZE)
+        self.last_error: str | None = None  # the last action's errorMessage, until an action succeeds
 
     # ------------------------------------------------------------------ lifecycle
     async def reset(self, task: Any, options: dict[str, Any]) -> None:
@@ -41,6 +46,15 @@ class KitchenEnvironment(Environment):
         self.mode = str(options.get("observation") or "text")
         if self.mode not in OBSERVATION_MODES:
             raise EnvError(f"unknown observation mode {self.mode!r}; use one of {', '.join(OBSERVATION_MODES)}")
+        self.view = str(options.get("kitchen_view") or "first_person")
+        if self.view not in KITCHEN_VIEWS:
+            raise EnvError(f"unknown kitchen_view {self.view!r}; use one of {', '.join(KITCHEN_VIEWS)}")
+        size = (options.get("kitchen_camera_width") or DEFAULT_SIZE, options.get("kitchen_camera_height") or DEFAULT_SIZE)
+        try:
+            check_size(*size)
+        except ValueError as exc:
+            raise EnvError(f"{exc} (episode options kitchen_camera_width/kitchen_camera_height)") from None
+        self.camera_size = size
         settings = self.services.settings
         backend = backend_name(options, settings)
         want_frames = self.mode != "text"
@@ -59,6 +73,9 @@ class KitchenEnvironment(Environment):
 
         # A real AI2-THOR starts a process and talks over pipes: keep that off the event loop.
         self.session = build() if backend == "sim" else await anyio.to_thread.run_sync(build)
+        self.last_error = None
+        if want_frames:
+            self.image_png()  # a missing OpenGL stops the episode at its start, with what to install
 
     async def close(self) -> None:
         session, self.session = self.session, None
@@ -84,16 +101,27 @@ class KitchenEnvironment(Environment):
 
     def _observation(self) -> Observation:
         session = self._session()
-        text, data = build_observation(session, self.mode)
+        first_person = self.view == "first_person" and self._backend_frame() is None
+        text, data = build_observation(session, self.mode, view="first_person" if first_person else "map",
+                                       last_error=self.last_error)
         images = [self.image_png()] if self.mode in ("vision", "both") else []
         return Observation(text=text, data=data, images=images)
 
+    def _backend_frame(self) -> Any:
+        return getattr(self._session().controller.last_event, "frame", None)
+
     def image_png(self) -> bytes:
         session = self._session()
-        frame = getattr(session.controller.last_event, "frame", None)
+        frame = self._backend_frame()
         if frame is not None:  # a real (or stand-in) AI2-THOR frame
             return frame_png(frame)
-        return png_bytes(render_topdown(session.meta, session.reachable, label=session.handle))
+        if self.view == "map":
+            return png_bytes(render_topdown(session.meta, session.reachable, label=session.handle))
+        width, height = self.camera_size
+        try:
+            return render_png(session.meta, session.reachable, width=width, height=height)
+        except CameraUnavailable as exc:
+            raise EnvError(str(exc)) from None
 
     async def _run(self, fn: Callable[[KitchenSession], Any]) -> Any:
         session = self._session()
@@ -106,7 +134,12 @@ class KitchenEnvironment(Environment):
             self._deliver()
             return fn(session)
 
-        await self._run(step)
+        try:
+            await self._run(step)
+        except EnvError as exc:
+            self.last_error = str(exc)
+            raise
+        self.last_error = None
         return self._observation()
 
     # ------------------------------------------------------------------ actions (the table in actions.py)

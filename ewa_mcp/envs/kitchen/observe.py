@@ -105,9 +105,13 @@ def pose_line(session: KitchenSession) -> str:
             f"facing {heading}, rotation {rotation}°; holding {holding}.")
 
 
-def build_observation(session: KitchenSession, mode: str = "text") -> tuple[str, dict[str, Any]]:
-    """(text, data) for the agent; ``mode`` is the episode's observation option."""
+def build_observation(session: KitchenSession, mode: str = "text", *, view: str = "map",
+                      last_error: str | None = None) -> tuple[str, dict[str, Any]]:
+    """(text, data) for the agent; ``mode`` is the episode's observation option, ``view`` the kitchen image
+    (first_person or map), ``last_error`` the last action's error message if it failed."""
     notes = session.take_notes()
+    if mode == "vision" and view == "first_person":
+        return camera_observation(session, notes, last_error)
     lines = [pose_line(session)]
     report = session.last_report
     if report is not None:
@@ -174,6 +178,36 @@ def build_observation(session: KitchenSession, mode: str = "text") -> tuple[str,
         }
         for object_id, obj in session.objects.items()
     ]
+    return "\n".join(lines), data
+
+
+def camera_observation(session: KitchenSession, notes: list[str],
+                       last_error: str | None) -> tuple[str, dict[str, Any]]:
+    """Vision only: what the camera frame cannot show, as AI2-THOR's event gives it beside the frame — what is
+    held, and whether the last action succeeded (lastActionSuccess, errorMessage). No pose, no object list."""
+    held = session.held_id
+    holding = _describe(session, held, _children(session)) if held is not None else "nothing"
+    report = session.last_report
+    lines = [f"Kitchen {session.scene}: the image is your first-person camera (90° field of view). "
+             f"Holding: {holding}."]
+    if last_error is not None:
+        lines.append(f"Last action failed: {last_error}")
+    elif report is not None:
+        lines.append("Last action succeeded. " + report.line(session.handle))
+    lines.extend(notes)
+    data: dict[str, Any] = {
+        "scene": session.scene,
+        "backend": session.backend,
+        "view": "first_person",
+        "holding": session.handle(held) if held else None,
+        "lastActionSuccess": last_error is None,
+        "errorMessage": last_error or "",
+        "last_action": None if report is None or last_error is not None else {
+            "action": report.action, "target": session.handle(report.target) if report.target else None,
+            "notes": report.notes, "effects": report.effects,
+        },
+        "deliveries": notes,
+    }
     return "\n".join(lines), data
 
 

@@ -72,7 +72,7 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         return await act(episode_id, "kitchen_action", {"action": action}, lambda k: k.run(action))
 
     @mcp.resource("ewa://episodes/{episode_id}/kitchen.png", mime_type="image/png",
-                  description="The kitchen of an episode, drawn from above (or AI2-THOR's frame)")
+                  description="The kitchen of an episode: the agent's camera frame (kitchen_view='map': drawn from above)")
     async def kitchen_image(episode_id: str) -> bytes:
         try:
             episode = episodes.get(episode_id)
