@@ -57,7 +57,7 @@ class Episode:
     recorder: EpisodeRecorder
     options: dict[str, Any]
     environments: dict[EnvSide, Environment] = field(default_factory=dict)
-    # kind -> the registry name it was created from ("browser", "kitchen", "street", "geo"):
+    # side -> the registry name it was created from ("browser", "kitchen", "street", "geo"):
     # what a tool checks before it acts (a kitchen tool refuses a street episode).
     environment_names: dict[EnvSide, str] = field(default_factory=dict)
     active: EnvSide = "web"
