@@ -52,18 +52,9 @@ TASK = {"id": "bench-memory", "domain": "demo", "intent": "benchmark: an idle we
 
 # ------------------------------------------------------------------ reading /proc
 def _children() -> dict[int, list[int]]:
-    tree: dict[int, list[int]] = {}
-    for entry in os.listdir("/proc"):
-        if not entry.isdigit():
-            continue
-        try:
-            with open(f"/proc/{entry}/stat", encoding="utf-8", errors="replace") as f:
-                stat = f.read()
-        except OSError:
-            continue  # gone meanwhile
-        ppid = int(stat.rsplit(")", 1)[1].split()[1])
-        tree.setdefault(ppid, []).append(int(entry))
-    return tree
+    from ewa_mcp.evaluation.lifeline import children_map  # the one reader of /proc's process tree
+
+    return children_map()
 
 
 def descendants(root: int) -> list[int]:

@@ -46,11 +46,7 @@ class EpisodeStarted(BaseModel):
     observation: dict[str, Any]
 
 
-SERVER_DESCRIPTION = ("the server's admission rules: open_episodes, max_episodes, max_episodes_per_client, "
-                      "idle_timeout_s (an episode with no call for this long is ended as aborted), reaped_idle")
-
-
-class EpisodeStatus(BaseModel):
+class _StatusHead(BaseModel):
     episode_id: str
     task_id: str
     domain: str
@@ -62,6 +58,13 @@ class EpisodeStatus(BaseModel):
     step_limit: int
     steps_left: int
     switches: int
+
+
+SERVER_DESCRIPTION = ("the server's admission rules: open_episodes, max_episodes, max_episodes_per_client, "
+                      "idle_timeout_s (an episode with no call for this long is ended as aborted), reaped_idle")
+
+
+class EpisodeStatus(_StatusHead):
     answer: str | None
     server: dict[str, Any] | None = Field(default=None, description=SERVER_DESCRIPTION)
 
@@ -76,20 +79,6 @@ def status_model() -> type[EpisodeStatus]:
     model = create_model("EpisodeStatus", __base__=_StatusHead, **fields, answer=(str | None, ...),
                          server=(dict[str, Any] | None, Field(default=None, description=SERVER_DESCRIPTION)))
     return cast("type[EpisodeStatus]", model)
-
-
-class _StatusHead(BaseModel):
-    episode_id: str
-    task_id: str
-    domain: str
-    status: str
-    end_reason: str | None
-    active_environment: str
-    environments: dict[str, str]
-    steps: int
-    step_limit: int
-    steps_left: int
-    switches: int
 
 
 def public_task(task: Any) -> dict[str, Any]:
