@@ -18,6 +18,7 @@ import random
 from PIL import Image, ImageDraw
 
 from ewa_mcp.street_drawing.camera import Camera
+from ewa_mcp.street_drawing.compass import draw_compass_strip
 from ewa_mcp.street_drawing.png import encode_png
 from ewa_mcp.street_drawing.sky import sky_gradient
 from ewa_mcp.street_drawing.text import bundled_font
@@ -359,6 +360,7 @@ def render(scene: Scene, cam: Camera | None = None) -> Image.Image:
             _draw_sign(draw, cam, "right", f.distance_m, f.sign, _sign_colour(f.sign))
     if scene.street_signs:
         _street_sign(draw, cam, scene.street_signs)
+    draw_compass_strip(draw, cam.width, cam.height, scene.heading)
     return img
 
 
