@@ -86,3 +86,28 @@ async def test_compass_strip_shows_the_heading(world):
         strips.append(img.crop((0, img.height - STRIP_H, img.width, img.height)).tobytes())
         assert Image.open(io.BytesIO(env.observation().images[0])).size == img.size
     assert len(set(strips)) == 3  # a different bearing draws a different strip
+
+
+def test_every_cue_the_text_names_is_drawn_in_a_sample_of_views(world):
+    """scene.text_cues (what describe names that a camera shows) must be among the ids render_cues draws,
+    for a sample of views in every city, biased to nodes with places (the views that name the most)."""
+    import random
+
+    from ewa_mcp.envs.street.scene import text_cues
+    from ewa_mcp.envs.street.street_view import render_cues
+
+    rng = random.Random(27)
+    missing: dict[str, str] = {}
+    kinds: set[str] = set()
+    for city in sorted(world.cities_by_name):
+        g = world.city(city)
+        placed = sorted({p.node for p in world.places.values() if p.city == g.city and p.node in g.index})
+        for node in rng.sample(placed, min(8, len(placed))) + rng.sample(g.ids, 2):
+            for heading in (0.0, 90.0, 180.0, 270.0):
+                scene = compute_scene(world, g, g.index[node], heading, "front")
+                said = text_cues(scene)
+                kinds |= {c.split(":", 1)[0] for c in said}
+                for cue in said - render_cues(scene)[1]:
+                    missing.setdefault(cue, f"{node} at {heading:.0f}°")
+    assert not missing, f"named in the text but not drawn: {sorted(missing.items())[:10]}"
+    assert {"road_ahead", "opening", "sign", "facade", "detail", "skyline", "street_sign"} <= kinds

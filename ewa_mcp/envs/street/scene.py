@@ -255,3 +255,26 @@ def describe(scene: Scene) -> str:
     if scene.street_signs:
         parts.append("Street signs here: " + " / ".join(scene.street_signs) + ".")
     return " ".join(parts)
+
+
+def text_cues(scene: Scene) -> frozenset[str]:
+    """The ids of the visible things ``describe`` names (street_view.render_cues reports the ids it draws;
+    a test checks these are a subset). Street names away from a corner's signs are map knowledge the
+    text adds, not something a camera shows, so they have no id; the corner's signs do."""
+    from .street_view import details_of  # the words -> drawn details table lives with the drawing
+
+    cues = {"road_ahead" if scene.road_ahead else "road_ends"}
+    if scene.road_ahead:
+        cues |= {f"opening:{o.side}:{round(o.distance_m)}" for o in scene.openings[:3]}
+    elif scene.open_space:
+        cues.add("open_space")
+    for f in scene.frontages[:5]:
+        if f.sign:
+            cues.add(f"sign:{f.sign}")
+        if f.style or details_of(f.hint):
+            cues.add(f"facade:{f.place_id}")
+            cues |= {f"detail:{f.place_id}:{d}" for d in details_of(f.hint)}
+    for item in sorted(scene.skyline, key=lambda s: s.distance_m)[:2]:
+        cues.add(f"skyline:{item.place_id}")
+    cues |= {f"street_sign:{name}" for name in scene.street_signs}
+    return frozenset(cues)
