@@ -180,6 +180,6 @@ def _small_side(draw: ImageDraw.ImageDraw, cx: float, bottom: float, scale: floa
         draw.line([(rx, bottom - r), (seat_x, bottom - h * 0.4)], fill=(40, 40, 40), width=max(1, int(3 * scale)))
         draw.line([(rx, bottom - 2 * r), (rx, bottom - h)], fill=(60, 60, 80), width=max(2, int(6 * scale)))
         draw.ellipse([rx - 5 * scale, bottom - h - 10 * scale, rx + 5 * scale, bottom - h], fill=(80, 60, 50))
-    for dx in (-0.4, 0.1, 0.5):
-        x = cx + front * dx * w
-        draw.ellipse([x - r, bottom - 2 * r, x + r, bottom], fill=(20, 20, 20))
+    for along in (-0.4, 0.1, 0.5):
+        wx = cx + front * along * w
+        draw.ellipse([wx - r, bottom - 2 * r, wx + r, bottom], fill=(20, 20, 20))

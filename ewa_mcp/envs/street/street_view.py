@@ -416,7 +416,7 @@ def _open_ground(draw: ImageDraw.ImageDraw, cam: Camera, rng: random.Random) -> 
     lawn = [cam.project(-80, 0, 6.0), cam.project(-400, 0, 400), cam.project(400, 0, 400), cam.project(80, 0, 6.0)]
     draw.polygon(lawn, fill=(96, 150, 72))
     draw.rectangle([0, cam.project(0, 0, 6.0)[1], cam.width, cam.height], fill=SIDEWALK)
-    for k in range(9):
+    for _ in range(9):
         z = 14 + rng.uniform(0, 70)
         x = rng.uniform(-40, 40)
         bx, by = cam.project(x, 0, z)
