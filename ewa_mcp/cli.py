@@ -11,6 +11,7 @@ from typing import Any
 
 from . import __version__
 from .evaluation.heuristics import NAMES as HEURISTIC_NAMES
+from .evaluation.scale import add_scale_arguments
 from .pipes import quiet_on_closed_pipe
 
 
@@ -197,7 +198,7 @@ def cmd_eval(args: argparse.Namespace) -> int:
         else:
             agent = {"oracle": OracleAgent, "noop": NoopAgent, "random": RandomAgent}[args.agent]()
         if args.observation:
-            # start_episode's options (runner.play_episode reads them from the agent, which travels to workers)
+            # start_episode's options (playing.play_episode reads them from the agent, which travels to workers)
             agent.episode_options = {"observation": args.observation}
         patterns = args.tasks
         if args.agent == "replay" and not patterns:
@@ -274,25 +275,6 @@ def cmd_export_sft(args: argparse.Namespace) -> int:
     for why in summary.not_replayable:
         print(f"left out, did not replay as recorded: {why}", file=sys.stderr)
     return 0
-
-
-def add_scale_arguments(p: argparse.ArgumentParser) -> None:
-    """--workers, --concurrency and --ray (shared with the LLM agent examples)."""
-    g = p.add_argument_group("scale", "where episodes run (docs/scaling.md)")
-    g.add_argument("--workers", type=int, default=1, metavar="N",
-                   help="processes, each with its own server, browser and sites (default 1: this process)")
-    g.add_argument("--concurrency", type=int, default=None, metavar="K",
-                   help="episodes at once in each process or Ray actor (default 1; LLM agents waiting on a "
-                   "model want more)")
-    g.add_argument("--ray", nargs="?", const="", default=None, metavar="ADDRESS",
-                   help="play on Ray actors. ADDRESS: a cluster's (host:6379 on a cluster node, ray://host:10001 "
-                   "from outside), 'auto' (the cluster `ray start` made here) or 'local' (a new one-machine "
-                   "cluster); without it RAY_ADDRESS, else the cluster started here, else a new local one. "
-                   "Needs `pip install 'ewa-mcp[ray]'`")
-    g.add_argument("--ray-actors", type=int, default=None, metavar="N",
-                   help="Ray actors to start (default: the cluster's CPUs / --ray-num-cpus)")
-    g.add_argument("--ray-num-cpus", type=float, default=1.0, metavar="C",
-                   help="CPUs each Ray actor declares (its server, browser and sites; default 1)")
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -38,7 +38,8 @@ from mcp import Client
 
 from .core import registry
 from .evaluation.llm import HIDDEN_TOOLS, NUDGE, SYSTEM_PROMPT
-from .evaluation.runner import EvalError, _free_port, select_tasks
+from .evaluation.playing import free_port
+from .evaluation.runner import EvalError, select_tasks
 from .core.paths import TaskStoreMissing, check_task_dirs, runs_dir  # noqa: F401 (re-exported)
 from .core.paths import task_dirs as default_task_dirs
 from .core.records import new_run_id
@@ -83,7 +84,7 @@ class _Server:
     lock = anyio.Lock()
 
     def __init__(self, run_dir: Path, task_dirs: list[Path]):
-        self.port = _free_port()
+        self.port = free_port()
         self.url = f"http://127.0.0.1:{self.port}/mcp"
         args = [sys.executable, "-m", "ewa_mcp", "serve", "--transport", "http", "--port", str(self.port),
                 "--run-dir", str(run_dir)]

@@ -26,7 +26,8 @@ class Observation:
 
 
 class Environment:
-    """Base class; subclasses set ``kind`` and ``name`` and implement the async hooks."""
+    """Base class; subclasses set ``side`` and ``name`` (its registry name) and implement the async hooks.
+    ``check_environment`` (conformance.py) checks the contract."""
 
     side: ClassVar[Literal["web", "embodied"]]  # the slot it fills in an episode
     name: ClassVar[str]

@@ -21,7 +21,7 @@ from mcp.server.mcpserver.exceptions import ToolError
 
 from . import registry
 from .environment import EnvError, Environment, Observation
-from .records import EpisodeRecorder, RecordWriteError
+from .records import EpisodeRecorder, FinalState, RecordWriteError
 from .services import Services
 from .taskmodel import SCHEMA_VERSION, EnvSide, Task, TaskStore
 
@@ -57,7 +57,7 @@ class Episode:
     recorder: EpisodeRecorder
     options: dict[str, Any]
     environments: dict[EnvSide, Environment] = field(default_factory=dict)
-    # kind -> the registry name it was created from ("browser", "kitchen", "street", "geo"):
+    # side -> the registry name it was created from ("browser", "kitchen", "street", "geo"):
     # what a tool checks before it acts (a kitchen tool refuses a street episode).
     environment_names: dict[EnvSide, str] = field(default_factory=dict)
     active: EnvSide = "web"
@@ -487,27 +487,25 @@ class EpisodeManager:
                 env_states[kind] = {"name": type(env).name, **(await env.final_state())}
             except Exception as exc:  # a broken environment still leaves a gradable record
                 env_states[kind] = {"name": type(env).name, "error": f"{type(exc).__name__}: {exc}"}
-        final = (
-            {
-                "schema_version": SCHEMA_VERSION,
-                "episode_id": episode.id,
-                "task_id": episode.task.id,
-                "domain": episode.task.domain,
-                "status": status,
-                "end_reason": reason,
-                "answer": episode.answer,
-                "submission": episode.submission,
-                "steps": episode.steps,
-                "calls": episode.calls,
-                "switches": episode.switches,
-                "active_environment": episode.active,
-                "options": episode.options,
-                "started_at": datetime.fromtimestamp(episode.started_at, UTC).isoformat(),
-                "ended_at": datetime.fromtimestamp(episode.ended_at, UTC).isoformat(),
-                "wall_time_s": round(episode.ended_at - episode.started_at, 3),
-                "environments": env_states,
-                **({"infrastructure_failure": reason} if infrastructure else {}),
-            }
+        final = FinalState(
+            schema_version=SCHEMA_VERSION,
+            episode_id=episode.id,
+            task_id=episode.task.id,
+            domain=episode.task.domain,
+            status=status,
+            end_reason=reason,
+            answer=episode.answer,
+            submission=episode.submission,
+            steps=episode.steps,
+            calls=episode.calls,
+            switches=episode.switches,
+            active_environment=episode.active,
+            options=episode.options,
+            started_at=datetime.fromtimestamp(episode.started_at, UTC).isoformat(),
+            ended_at=datetime.fromtimestamp(episode.ended_at, UTC).isoformat(),
+            wall_time_s=round(episode.ended_at - episode.started_at, 3),
+            environments=env_states,
+            **({"infrastructure_failure": reason} if infrastructure else {}),
         )
         try:
             episode.recorder.write_final_state(final)

@@ -34,31 +34,33 @@ class _Record(BaseModel):
 
 
 class TrajectoryLine(_Record):
-    """One line of trajectory.jsonl: one tool call on the episode."""
+    """One line of trajectory.jsonl: one tool call on the episode. ``EpisodeRecorder.step`` builds it; every
+    field but ``images`` is always written (a value may be null where it says so)."""
 
-    step: int = Field(ge=0)
+    step: int = Field(ge=0, description="the call's number in the episode (1 = the first after start_episode's 0)")
+    time: str = Field(description="when the call ended, ISO 8601 UTC")
+    t: float = Field(description="the same as a Unix time in seconds")
     tool: str
-    args: dict[str, Any] = Field(default_factory=dict)
-    ok: bool
-    error: str | None = None
-    counted: bool = True
-    environment: str | None = None
-    observation: str = ""
-    t: float | None = None
-    time: str | None = None
-    duration_ms: float | None = None
-    images: list[str] | None = None
+    args: dict[str, Any] = Field(description="the arguments as the tool received them (a refused call's, bounded)")
+    ok: bool = Field(description="false: the call was refused or failed; error says why")
+    error: str | None
+    duration_ms: float = Field(ge=0)
+    environment: str | None = Field(description="the episode's active environment (web or embodied)")
+    counted: bool = Field(description="whether the call used a step (every call but start_episode)")
+    observation: str = Field(description="a one-line digest of what the call returned")
+    images: list[str] | None = Field(default=None, description="the step's images, relative to the episode folder")
 
 
 class FinalState(_Record):
-    """final_state.json, written once when the episode ends."""
+    """final_state.json, written once when the episode ends (``EpisodeManager`` builds it; a resumed eval writes
+    one for an episode it could not play, with only what it knows: the fields below ``end_reason`` may be missing)."""
 
-    schema_version: int | None = None
-    episode_id: str | None = None
-    task_id: str | None = None
-    domain: str | None = None
+    schema_version: int
+    episode_id: str
+    task_id: str
+    domain: str
     status: Literal["finished", "step_limit", "aborted"]
-    end_reason: str | None = None
+    end_reason: str | None
     answer: str | None = None
     submission: dict[str, Any] | None = None
     steps: int | None = Field(default=None, ge=0)
@@ -66,6 +68,8 @@ class FinalState(_Record):
     switches: int | None = Field(default=None, ge=0)
     active_environment: str | None = None
     options: dict[str, Any] = Field(default_factory=dict)
+    started_at: str | None = Field(default=None, description="ISO 8601 UTC")
+    ended_at: str | None = Field(default=None, description="ISO 8601 UTC")
     wall_time_s: float | None = None
     environments: dict[str, dict[str, Any]] = Field(default_factory=dict)
     # Set when the episode was cut off by something other than the agent (the server shut down, its eval worker
@@ -82,13 +86,12 @@ class WebEvent(_Record):
 
 
 def record_problem(model: type[BaseModel], payload: Any, where: str) -> str | None:
-    """Why ``payload`` does not fit ``model`` (the first problem, bounded), or None when it fits."""
+    """Why ``payload`` does not fit ``model`` (its problems, bounded), or None when it fits."""
     try:
         model.model_validate(payload)
     except ValidationError as exc:
-        first = exc.errors()[0]
-        loc = ".".join(str(p) for p in first["loc"]) or "<root>"
-        return f"{where}: {loc}: {first['msg']}"[:300]
+        parts = [f"{'.'.join(str(p) for p in error['loc']) or '<root>'}: {error['msg']}" for error in exc.errors()]
+        return f"{where}: {'; '.join(parts[:6])}"[:400]
     return None
 
 
@@ -174,24 +177,11 @@ class EpisodeRecorder:
         images: list[str] | None = None,
         extra: dict[str, Any] | None = None,
     ) -> None:
-        record = {
-            "step": index,
-            "time": _now_iso(),
-            "t": time.time(),
-            "tool": tool,
-            "args": args,
-            "ok": ok,
-            "error": error,
-            "duration_ms": round(duration_ms, 3),
-            "environment": environment,
-            "counted": counted,
-            "observation": digest(observation),
-        }
-        if images:
-            record["images"] = images
-        if extra:
-            record.update(extra)
-        self._append(self._trajectory, record)
+        line = TrajectoryLine(step=index, time=_now_iso(), t=time.time(), tool=tool, args=args, ok=ok, error=error,
+                              duration_ms=round(duration_ms, 3), environment=environment, counted=counted,
+                              observation=digest(observation), **({"images": images} if images else {}),
+                              **(extra or {}))
+        self._append(self._trajectory, line.model_dump(mode="json", exclude_unset=True))
 
     def save_images(self, index: int, images: list[bytes]) -> list[str]:
         """Observation images of one step, as files beside the trajectory (paths relative to the episode)."""
@@ -212,8 +202,11 @@ class EpisodeRecorder:
     def event(self, event: dict[str, Any]) -> None:
         self._append(self._events, {"time": _now_iso(), "t": time.time(), **event})
 
-    def write_final_state(self, state: dict[str, Any]) -> None:
-        self._write_json("final_state.json", state)
+    def write_final_state(self, state: FinalState | dict[str, Any]) -> None:
+        """Write final_state.json from its model (a dict is validated into one first: what is written always fits
+        the format the graders read)."""
+        model = state if isinstance(state, FinalState) else FinalState.model_validate(state)
+        self._write_json("final_state.json", model.model_dump(mode="json", exclude_unset=True))
 
     def _write_json(self, name: str, payload: dict[str, Any]) -> None:
         # Write-then-rename: a reader never sees a half-written file.
@@ -239,3 +232,23 @@ class EpisodeRecorder:
 
 def new_run_id() -> str:
     return datetime.now(UTC).strftime("%Y%m%d-%H%M%S-") + os.urandom(3).hex()
+
+
+def export_records_schema() -> dict[str, Any]:
+    """The JSON Schema of the three record formats (docs/records.schema.json; tests/core/test_records_schema.py
+    checks the committed file is current). Regenerate with ``python -m ewa_mcp.core.records``."""
+    return {
+        "$schema": "https://json-schema.org/draft/2020-12/schema",
+        "title": "ewa-mcp run records: runs/<run>/<episode>/",
+        "description": "trajectory.jsonl holds one trajectory_line per line, web_events.jsonl one web_event per "
+                       "line, final_state.json one final_state.",
+        "$defs": {
+            "trajectory_line": TrajectoryLine.model_json_schema(),
+            "final_state": FinalState.model_json_schema(),
+            "web_event": WebEvent.model_json_schema(),
+        },
+    }
+
+
+if __name__ == "__main__":
+    print(json.dumps(export_records_schema(), indent=2, ensure_ascii=False))

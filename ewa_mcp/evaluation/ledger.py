@@ -12,7 +12,7 @@ from collections import deque
 from collections.abc import Hashable
 
 from ewa_mcp.core.taskmodel import Task
-from .runner import EpisodeOutcome
+from .outcomes import EpisodeOutcome
 
 
 class Ledger:

@@ -171,7 +171,7 @@ def example_parser(description: str, default_model: str):
                    help="restrict to a difficulty (repeatable)")
     p.add_argument("--sample", type=int, metavar="N", help="N tasks per domain")
     p.add_argument("--transport", choices=["inprocess", "stdio", "http"], default="stdio")
-    from ..cli import add_scale_arguments
+    from .scale import add_scale_arguments
 
     add_scale_arguments(p)  # --workers, --concurrency, --ray: the agent's adapter factory must be picklable
     p.add_argument("--run-dir", metavar="DIR")

@@ -10,7 +10,8 @@ from typing import Any
 from anyio.from_thread import start_blocking_portal
 
 from ewa_mcp.core.taskmodel import Task
-from .runner import EpisodeOutcome, connect, play_episode
+from .outcomes import EpisodeOutcome
+from .playing import connect, play_episode
 
 
 class EpisodePlayer:

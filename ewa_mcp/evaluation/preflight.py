@@ -4,7 +4,7 @@ message that fixes it instead of failing every episode in turn."""
 from __future__ import annotations
 
 from ..core.taskmodel import Task
-from .runner import EvalError
+from .outcomes import EvalError
 
 
 def check_browser(tasks: list[Task]) -> None:

@@ -24,7 +24,7 @@ from typing import Any
 
 from ewa_mcp.core.taskmodel import Task
 from .ledger import Ledger
-from .runner import EpisodeOutcome, EvalError, EvalSummary, Progress
+from .outcomes import EpisodeOutcome, EvalError, EvalSummary, Progress
 from .scale import RayOptions
 
 INCOMING = ".incoming-"

@@ -24,7 +24,7 @@ from typing import Any
 
 from ..core.records import EpisodeRecorder
 from ..core.taskmodel import SCHEMA_VERSION, Task
-from .runner import EvalError, EpisodeOutcome
+from .outcomes import EpisodeOutcome, EvalError
 
 EVAL_FILE = "eval.json"  # who recorded the run: a resume must not mix agents in one run
 

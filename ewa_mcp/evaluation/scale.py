@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import argparse
+
 from dataclasses import dataclass
 from typing import Any
 
-from .runner import EvalError
+from .outcomes import EvalError
 
 
 @dataclass
@@ -50,3 +52,22 @@ def scale_options(args: Any) -> ScaleOptions:
     elif args.ray_actors is not None:
         raise EvalError("--ray-actors needs --ray")
     return ScaleOptions(workers=workers, concurrency=concurrency, ray=ray)
+
+
+def add_scale_arguments(p: argparse.ArgumentParser) -> None:
+    """--workers, --concurrency and --ray (shared with the LLM agent examples)."""
+    g = p.add_argument_group("scale", "where episodes run (docs/scaling.md)")
+    g.add_argument("--workers", type=int, default=1, metavar="N",
+                   help="processes, each with its own server, browser and sites (default 1: this process)")
+    g.add_argument("--concurrency", type=int, default=None, metavar="K",
+                   help="episodes at once in each process or Ray actor (default 1; LLM agents waiting on a "
+                   "model want more)")
+    g.add_argument("--ray", nargs="?", const="", default=None, metavar="ADDRESS",
+                   help="play on Ray actors. ADDRESS: a cluster's (host:6379 on a cluster node, ray://host:10001 "
+                   "from outside), 'auto' (the cluster `ray start` made here) or 'local' (a new one-machine "
+                   "cluster); without it RAY_ADDRESS, else the cluster started here, else a new local one. "
+                   "Needs `pip install 'ewa-mcp[ray]'`")
+    g.add_argument("--ray-actors", type=int, default=None, metavar="N",
+                   help="Ray actors to start (default: the cluster's CPUs / --ray-num-cpus)")
+    g.add_argument("--ray-num-cpus", type=float, default=1.0, metavar="C",
+                   help="CPUs each Ray actor declares (its server, browser and sites; default 1)")

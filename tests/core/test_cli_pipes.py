@@ -46,7 +46,8 @@ def test_ewa_grade_output_into_a_closed_pipe(tmp_path: Path) -> None:
                                 "answer": {"kind": "text", "must_include": ["yes"]}})
     recorder = EpisodeRecorder(tmp_path / "run" / "ep-1")
     recorder.write_task(task.model_dump(mode="json"))
-    recorder.write_final_state({"status": "finished", "answer": "yes"})
+    recorder.write_final_state({"schema_version": 1, "episode_id": recorder.directory.name, "task_id": "t-1",
+                                "domain": "cooking", "status": "finished", "end_reason": "finished", "answer": "yes"})
     recorder.close()
     done = run_into_closed_pipe("-m", "ewa_mcp.graders.cli", str(tmp_path / "run"), "--format", "json")
     assert "Traceback" not in done.stderr and "BrokenPipeError" not in done.stderr, done.stderr

@@ -10,7 +10,7 @@ from mcp import Client
 
 from ewa_mcp.cli import build_parser
 from ewa_mcp.evaluation.agents import OracleAgent
-from ewa_mcp.evaluation.runner import play_episode
+from ewa_mcp.evaluation.playing import play_episode
 from ewa_mcp.server import ServerConfig, build_server
 
 from .fixtures import CounterEnv, NoteEnv, counter_task, register, write_tasks

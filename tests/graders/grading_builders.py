@@ -6,6 +6,8 @@ real run produces; the goals, states and trajectories are chosen per test with k
 
 from __future__ import annotations
 
+import json
+
 import itertools
 from pathlib import Path
 from typing import Any
@@ -112,7 +114,9 @@ class EpisodeBuilder:
             environments["web"] = web
         if embodied is not None:
             environments["embodied"] = embodied
-        self.recorder.write_final_state({
+        # Written as raw JSON, not through the recorder's model: a builder also makes records a server never
+        # would (no task), to test how the graders read them.
+        self._raw_final_state({
             "schema_version": 1, "episode_id": self.episode_id, "task_id": (self.task or {}).get("id"),
             "domain": (self.task or {}).get("domain"), "status": status, "end_reason": status, "answer": answer,
             "submission": submission, "steps": self.steps, "calls": self.calls, "switches": self.switches,
@@ -120,6 +124,9 @@ class EpisodeBuilder:
             "environments": environments,
         })
         return self.close()
+
+    def _raw_final_state(self, payload: dict[str, Any]) -> None:
+        (self.directory / "final_state.json").write_text(json.dumps(payload, indent=2), encoding="utf-8")
 
     def close(self) -> EpisodeBuilder:
         self.recorder.close()
