@@ -23,7 +23,7 @@ from ewa_mcp.street_drawing.compass import draw_compass_strip
 from ewa_mcp.street_drawing.png import encode_png
 from ewa_mcp.street_drawing.sky import sky_gradient
 from ewa_mcp.street_drawing.text import bundled_font
-from .scene import Frontage, Scene
+from .scene import SKYLINE_SHOWN, Frontage, Scene
 
 WIDTH, HEIGHT = 480, 330  # large enough for a lion by a door or a clock on a tower to read
 CAMERA_HEIGHT_M = 1.7
@@ -256,14 +256,54 @@ def _hazed(rgb: tuple[int, int, int]) -> tuple[int, int, int]:
     return r, g, b
 
 
-def _skyline(draw: ImageDraw.ImageDraw, scene: Scene, cam: Camera, cues: set[str]) -> None:
+def _skyline_box(item, cam: Camera) -> tuple[float, float, float, tuple[int, int, int]]:
+    """Where a skyline tower is drawn: its centre column, half width, top row, and its hazed colour."""
+    x = cam.screen_x(item.rel_angle)
+    top = cam.horizon - min(cam.horizon - 4, item.height_m * cam.focal / item.distance_m)
+    half = max(3.0, 40.0 * cam.focal / item.distance_m)
+    colour = _hazed(STYLE_PALETTES.get(_style_key(item.style), ((150, 160, 172), (0, 0, 0)))[0])
+    return x, half, top, colour
+
+
+MIN_ROOF_M = 4.0  # the lowest a building is drawn when lowered under a skyline tower (one storey)
+
+
+def _skyline_windows(scene: Scene, cam: Camera) -> list[tuple[float, float, float]]:
+    """(x0, x1, lowest roof row) per skyline tower the text names: nearer ordinary buildings in those columns
+    are drawn low enough for the tower's top to show over their roofs, as it does in the text."""
+    out = []
+    for item in sorted(scene.skyline, key=lambda s: s.distance_m)[:2]:
+        x, half, top, _ = _skyline_box(item, cam)
+        out.append((x - half, x + half, top + (cam.horizon - top) * SKYLINE_SHOWN))
+    return out
+
+
+def _capped_height(height: float, cam: Camera, plane_x: float | None, z0: float, z1: float,
+                   windows: list[tuple[float, float, float]]) -> float:
+    """``height`` lowered (to one storey at least) so that the roof of a front on the plane x = ``plane_x``
+    (None: across the view at depth z0) stays below every window it overlaps, measured at the depth where
+    the front meets the window's columns."""
+    if plane_x is None:
+        lo, hi = cam.project(-60, 0, z0)[0], cam.project(60, 0, z0)[0]
+    else:
+        lo, hi = sorted((cam.project(plane_x, 0, z0)[0], cam.project(plane_x, 0, z1)[0]))
+    for x0, x1, row in windows:
+        if hi < x0 or lo > x1:
+            continue
+        z = z0
+        if plane_x is not None:  # the depth of the front at the window's column nearest the screen edge
+            edge = x0 if plane_x < 0 else x1
+            if (edge - cam.cx) * plane_x > 0:
+                z = min(max(plane_x * cam.focal / (edge - cam.cx), z0), z1)
+        cap = cam.eye_height + (cam.horizon - row) * z / cam.focal
+        height = min(height, max(MIN_ROOF_M, cap))
+    return height
+
+
+def _skyline(draw: ImageDraw.ImageDraw, scene: Scene, cam: Camera) -> None:
     for item in scene.skyline:
-        cues.add(f"skyline:{item.place_id}")
-        x = cam.screen_x(item.rel_angle)
-        top = cam.horizon - min(cam.horizon - 4, item.height_m * cam.focal / item.distance_m)
-        half = max(3.0, 40.0 * cam.focal / item.distance_m)
+        x, half, top, colour = _skyline_box(item, cam)
         key = _style_key(item.style)
-        colour = _hazed(STYLE_PALETTES.get(key, ((150, 160, 172), (0, 0, 0)))[0])
         if key == "art deco":
             draw.rectangle([x - half, top + (cam.horizon - top) * 0.25, x + half, cam.horizon], fill=colour)
             draw.rectangle([x - half * 0.6, top + (cam.horizon - top) * 0.1, x + half * 0.6, cam.horizon], fill=colour)
@@ -326,7 +366,8 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
     img = Image.new("RGB", (cam.width, cam.height), SKY)
     draw = ImageDraw.Draw(img)
     _sky_and_ground(draw, cam)
-    _skyline(draw, scene, cam, cues)
+    _skyline(draw, scene, cam)
+    windows = _skyline_windows(scene, cam)
     end = scene.ahead_length_m if scene.road_ahead else 16.0
     end = max(end, 16.0)
     far = min(end, 240.0)
@@ -345,7 +386,7 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
                              fill=ROAD)
                 cues.add(f"opening:{o.side}:{round(o.distance_m)}")
         if far < AHEAD_END_WALL:
-            _end_wall(draw, cam, far + 12, rng)
+            _end_wall(draw, cam, far + 12, rng, windows=windows)
     elif scene.open_space:
         cues.add("road_ends")
         _open_ground(draw, cam, rng)
@@ -385,6 +426,8 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
             z = max((z0 + z1) / 2, 8.0)
             cx = z * math.tan(math.radians(lm.rel_angle))
             height = min(80.0, max(18.0, lm.height_m or 30.0))
+            if windows and not lm.height_m:
+                height = _capped_height(height, cam, None, z, z, windows)
             quad = [cam.project(cx - 12, 0, z), cam.project(cx - 12, height, z), cam.project(cx + 12, height, z),
                     cam.project(cx + 12, 0, z)]
             draw_facade(draw, quad, lm.style, rng, floors=max(3, int(height / 4)))
@@ -393,6 +436,8 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
             continue
         x = FACADE_X_M if side == "right" else -FACADE_X_M
         height = rng.uniform(12, 40) if lm is None else min(80.0, max(18.0, (lm.height_m or 30.0)))
+        if windows and (lm is None or not lm.height_m):  # a place of unknown height is no taller than needed
+            height = _capped_height(height, cam, x, z0, z1, windows)
         quad = [cam.project(x, 0, z0), cam.project(x, height, z0), cam.project(x, height, z1), cam.project(x, 0, z1)]
         draw_facade(draw, quad, lm.style if lm else "", rng, floors=max(3, int(height / 4)))
         if lm is not None:
@@ -405,6 +450,13 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
             _draw_sign(draw, cam, "right", f.distance_m, f.sign, _sign_colour(f.sign), cues)
     if scene.street_signs:
         _street_sign(draw, cam, scene.street_signs, cues)
+    # A skyline tower counts as drawn only where some of it is still in sight over the nearer roofs.
+    for item in scene.skyline:
+        x, half, top, colour = _skyline_box(item, cam)
+        box = (int(max(0, x - half)), int(max(0, top)), int(min(cam.width, x + half + 1)), int(cam.horizon))
+        if box[2] > box[0] and box[3] > box[1] and any(c == colour for _, c in
+                                                        img.crop(box).getcolors(maxcolors=1 << 16) or []):
+            cues.add(f"skyline:{item.place_id}")
     draw_compass_strip(draw, cam.width, cam.height, scene.heading)
     return img, frozenset(cues)
 
@@ -427,9 +479,13 @@ def _open_ground(draw: ImageDraw.ImageDraw, cam: Camera, rng: random.Random) -> 
 
 
 def _end_wall(draw: ImageDraw.ImageDraw, cam: Camera, z: float, rng: random.Random,
-              facing: Frontage | None = None, cues: set[str] | None = None) -> None:
+              facing: Frontage | None = None, cues: set[str] | None = None,
+              windows: list[tuple[float, float, float]] | None = None) -> None:
     """The building fronts across the end of the view; the place straight ahead, if any, in its style."""
-    quad = [cam.project(-60, 0, z), cam.project(-60, 28, z), cam.project(60, 28, z), cam.project(60, 0, z)]
+    height = 28.0
+    if windows:
+        height = _capped_height(height, cam, None, z, z, windows)
+    quad = [cam.project(-60, 0, z), cam.project(-60, height, z), cam.project(60, height, z), cam.project(60, 0, z)]
     draw_facade(draw, [quad[0], quad[1], quad[2], quad[3]], facing.style if facing else "", rng, floors=7)
     if facing is not None:
         front = [cam.project(-14, 0, z), cam.project(-14, 22, z), cam.project(14, 22, z), cam.project(14, 0, z)]
