@@ -23,7 +23,7 @@ from typing import Any
 
 from mcp.server.mcpserver import MCPServer
 from mcp.server.mcpserver.exceptions import ToolError
-from mcp_types import CallToolResult, TextContent
+from mcp_types import CallToolResult, ResourceLink, TextContent
 from mcp_types import Tool as MCPTool
 
 from . import __version__
@@ -67,8 +67,10 @@ def scrub_text(text: str, episode_id: str) -> str:
 
 
 def scrub_result(result: CallToolResult, episode_id: str) -> CallToolResult:
+    # Links to the episode's image resources name the episode, and the bound plane serves no resources:
+    # they are dropped (the same images are inline).
     content = [TextContent(type="text", text=scrub_text(c.text, episode_id)) if isinstance(c, TextContent) else c
-               for c in result.content]
+               for c in result.content if not (isinstance(c, ResourceLink) and episode_id in str(c.uri))]
     return result.model_copy(update={"content": content})
 
 

@@ -197,6 +197,9 @@ def cmd_eval(args: argparse.Namespace) -> int:
             agent = heuristic_agent(args.agent)
         else:
             agent = {"oracle": OracleAgent, "noop": NoopAgent, "random": RandomAgent}[args.agent]()
+        if args.observation:
+            # start_episode's options (playing.play_episode reads them from the agent, which travels to workers)
+            agent.episode_options = {"observation": args.observation}
         patterns = args.tasks
         if args.agent == "replay" and not patterns:
             patterns = sorted(agent.calls)  # a replay runs the tasks it has calls for
@@ -329,6 +332,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--difficulty", action="append", choices=["easy", "medium", "hard"],
                    help="restrict to a difficulty (repeatable)")
     p.add_argument("--sample", type=int, metavar="N", help="N tasks per domain, chosen deterministically")
+    p.add_argument("--observation", choices=["text", "vision", "both"],
+                   help="the episodes' observation mode (start_episode option; default: the server's, text)")
     add_scale_arguments(p)
     p.add_argument("--transport", choices=["inprocess", "stdio", "http"], default="inprocess")
     p.add_argument("--run-dir", metavar="DIR")

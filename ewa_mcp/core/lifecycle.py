@@ -14,7 +14,7 @@ from . import registry
 from .environment import Observation
 from .episodes import EpisodeError, EpisodeManager
 from .options import EpisodeOptions
-from .response import StepOutput, footer, step_result, tool_result
+from .response import IMAGE_NAME, StepOutput, footer, image_links, step_result, tool_result
 from .tool_table import EpisodeId, define_tool
 
 DomainName = str  # replaced by a Literal of the registry's domain names in register()
@@ -187,7 +187,7 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
             f"Environments: {envs}; active: {episode.active}. Step limit: {episode.task.step_limit}.\n\n"
             f"{observation.text}\n{footer(episode)}"
         )
-        return tool_result(out, text, observation.images)
+        return tool_result(out, text, observation.images, image_links(episode, observation.images))
 
     @define_tool(mcp, title="Observe the active environment", effect="look",
                  description="Show the active environment's observation again (counts as a step, like every call).")
@@ -273,3 +273,21 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
             raise ResourceError(str(exc)) from exc
         path = episode.recorder.directory / "trajectory.jsonl"
         return path.read_text(encoding="utf-8") if path.exists() else ""
+
+    @mcp.resource("ewa://episodes/{episode_id}/images/{image}", mime_type="image/png",
+                  description="An observation image of an episode, as recorded: {image} is <call>-<k>.png, the "
+                  "k-th image (from 0) of the episode's call number <call>, as linked from that call's result")
+    def episode_image_resource(episode_id: str, image: str) -> bytes:
+        try:
+            episode = episodes.get(episode_id)
+        except EpisodeError as exc:
+            raise ResourceError(str(exc)) from exc
+        match = IMAGE_NAME.match(image)
+        if match is None:
+            raise ResourceError(f"bad image name {image[:80]!r}: use <call>-<k>.png as linked from a tool result, "
+                                "e.g. 3-0.png")
+        path = episode.recorder.directory / f"images/step-{int(match[1]):04d}-{int(match[2])}.png"
+        if not path.is_file():
+            raise ResourceError(f"episode {episode_id} has no image {image}: call {int(match[1])} returned no image "
+                                f"number {int(match[2])}; use an address from a tool result's resource_link")
+        return path.read_bytes()

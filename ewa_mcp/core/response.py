@@ -4,10 +4,11 @@ content as structured data (matching the tool's output schema), and optional PNG
 from __future__ import annotations
 
 import base64
+import re
 from collections.abc import Awaitable, Callable, Sequence
 from typing import Any
 
-from mcp_types import CallToolResult, ImageContent, TextContent
+from mcp_types import CallToolResult, ImageContent, ResourceLink, TextContent
 from pydantic import BaseModel, Field
 
 from . import registry
@@ -25,11 +26,33 @@ class StepOutput(BaseModel):
     observation: dict[str, Any] = Field(default_factory=dict, description="the environment's structured observation")
 
 
-def tool_result(model: BaseModel, text: str, images: Sequence[bytes] = ()) -> CallToolResult:
+def image_uri(episode_id: str, step: int, k: int) -> str:
+    """The resource address of the k-th image of an episode's call ``step`` (read from its record)."""
+    return f"ewa://episodes/{episode_id}/images/{step}-{k}.png"
+
+
+IMAGE_NAME = re.compile(r"^(\d{1,9})-(\d{1,4})\.png$")
+
+
+def tool_result(model: BaseModel, text: str, images: Sequence[bytes] = (),
+                image_links: Sequence[str] = ()) -> CallToolResult:
+    """``image_links``, one per image, adds a resource_link after each inline image: many clients drop
+    or delay images returned inline by a tool, and can still fetch them by address."""
     content: list[Any] = [TextContent(type="text", text=text)]
-    for png in images:
+    for i, png in enumerate(images):
         content.append(ImageContent(type="image", data=base64.b64encode(png).decode("ascii"), mime_type="image/png"))
+        if i < len(image_links):
+            uri = image_links[i]
+            content.append(ResourceLink(type="resource_link", uri=uri, name=uri.rsplit("/", 1)[-1],
+                                        title=f"observation image {i + 1} of {len(images)}",
+                                        mime_type="image/png", size=len(png)))
     return CallToolResult(content=content, structured_content=model.model_dump(mode="json"))
+
+
+def image_links(episode: Any, images: Sequence[bytes]) -> list[str]:
+    """Addresses of the images of the episode's latest recorded call (EpisodeManager records each call's
+    images under its call index, which is ``episode.calls`` once the call has returned)."""
+    return [image_uri(episode.id, episode.calls, k) for k in range(len(images))]
 
 
 def footer(episode: Any) -> str:
@@ -49,7 +72,8 @@ def step_result(episode: Any, observation: Observation, *, include_images: bool 
         observation=observation.data,
     )
     text = f"{observation.text}\n{footer(episode)}"
-    return tool_result(model, text, observation.images if include_images else ())
+    images = observation.images if include_images else []
+    return tool_result(model, text, images, image_links(episode, images))
 
 
 def environment_for_tool(tool: str) -> str | None:

@@ -93,7 +93,10 @@ async def play_episode(client: Any, task: Task, agent: Any,
     t0 = time.monotonic()
     outcome = EpisodeOutcome(task_id=task.id, domain=task.domain, episode_id=None)
     try:
-        start = await client.call_tool("start_episode", {"task_id": task.id})
+        start_args: dict[str, Any] = {"task_id": task.id}
+        if getattr(agent, "episode_options", None):  # e.g. {"observation": "vision"} (ewa-mcp eval --observation)
+            start_args["options"] = dict(agent.episode_options)
+        start = await client.call_tool("start_episode", start_args)
         if start.is_error:
             outcome.failure = "start_episode: " + " ".join(getattr(c, "text", "") for c in start.content)
             if RECORD_WRITE_MARKER in outcome.failure:

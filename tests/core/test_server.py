@@ -3,6 +3,7 @@ episode protocol, the run directory, and bad input."""
 
 from __future__ import annotations
 
+import base64
 import json
 
 import pytest
@@ -214,7 +215,21 @@ async def test_observation_images_are_returned_and_recorded(server):
     async with Client(mcp) as client:
         ep = await start(client, "t-web")
         r = await client.call_tool("get_observation", {"episode_id": ep})
-        assert [c.type for c in r.content] == ["text", "image"] and r.content[1].mime_type == "image/png"
+        assert [c.type for c in r.content] == ["text", "image", "resource_link"]
+        assert r.content[1].mime_type == "image/png"
+        link = r.content[2]
+        assert str(link.uri) == f"ewa://episodes/{ep}/images/2-0.png" and link.mime_type == "image/png"
+        # The link reads back the recorded image, byte for byte the inline one.
+        fetched = await client.read_resource(str(link.uri))
+        assert base64.b64decode(fetched.contents[0].blob) == base64.b64decode(r.content[1].data)
+        assert fetched.contents[0].mime_type == "image/png"
+        templates = {t.uri_template for t in (await client.list_resource_templates()).resource_templates}
+        assert "ewa://episodes/{episode_id}/images/{image}" in templates
+        for bad, why in ((f"ewa://episodes/{ep}/images/9-0.png", "no image 9-0.png"),
+                         (f"ewa://episodes/{ep}/images/step.png", "bad image name"),
+                         ("ewa://episodes/nope/images/2-0.png", "nope")):
+            with pytest.raises(Exception, match=why):
+                await client.read_resource(bad)
     lines = [json.loads(x) for x in (run / ep / "trajectory.jsonl").read_text().splitlines()]
     assert lines[1]["images"] == ["images/step-0002-0.png"]
     assert (run / ep / "images" / "step-0002-0.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

@@ -53,3 +53,24 @@ def test_street_views_load_fonts_and_project_only_through_the_toolkit():
                 if needle in text and not (needle == "def _sky" and "sky_gradient(" in text):
                     offenders.append(f"{path.relative_to(ROOT)}: {needle}")
     assert not offenders, offenders
+
+
+def test_ascii_runs_in_a_script_line_are_drawn_in_the_latin_font():
+    from PIL import Image, ImageDraw
+
+    from ewa_mcp.street_drawing import fonts
+    from ewa_mcp.street_drawing.text import draw_centred_lines, runs
+
+    assert runs("ฎข 2169", "thai") == [("ฎข ", "thai"), ("2169", "latin")]
+    assert runs("ABC 123", "latin") == [("ABC 123", "latin")]
+    assert runs("ب 12", "arabic") == [("ب 12", "arabic")]  # right-to-left lines stay whole (bidi order)
+    if not fonts.has_font("thai"):
+        pytest.skip("no Thai font on this machine")
+
+    def plate(text: str) -> bytes:
+        img = Image.new("RGB", (200, 40), (255, 255, 255))
+        draw_centred_lines(ImageDraw.Draw(img), (0, 0, 200, 40), [(text, "thai")], (0, 0, 0))
+        return img.tobytes()
+
+    # A font without digits draws every digit as the same empty box: different digits must differ.
+    assert plate("ฎข 2169") != plate("ฎข 8888")

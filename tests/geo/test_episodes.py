@@ -163,6 +163,13 @@ async def test_setting_option_overrides_the_task_and_vision_mode_sends_images(se
         assert sum(c.type == "image" for c in r.content) == 4
         r = await client.call_tool("geo_move", {"episode_id": episode_id, "neighbour": "p2"})
         assert not r.is_error
+        # each image is linked as a resource that reads back the same PNG, for clients that drop inline images
+        links = [c for c in r.content if c.type == "resource_link"]
+        inline = [c for c in r.content if c.type == "image"]
+        assert len(links) == 4 and [str(c.uri).rsplit("-", 1)[-1] for c in links] == ["0.png", "1.png", "2.png",
+                                                                                        "3.png"]
+        fetched = await client.read_resource(str(links[2].uri))
+        assert fetched.contents[0].blob == inline[2].data
 
 
 @pytest.mark.parametrize("args,expected", [

@@ -197,7 +197,7 @@ async def test_vision_episode_through_the_server(tmp_path: Path, monkeypatch):
         assert "Last action failed:" in r.content[0].text and r.structured_content["observation"]["lastActionSuccess"] is False
         r = await client.call_tool("kitchen_teleport", {"episode_id": ep, "object": "Tomato"})
         text = r.content[0].text
-        assert [c.type for c in r.content] == ["text", "image"] and "Last action succeeded" in text
+        assert [c.type for c in r.content] == ["text", "image", "resource_link"] and "Last action succeeded" in text
         assert "In reach" not in text and "You stand at" not in text
         r = await client.call_tool("start_episode", {"task_id": "k-1", "options": {
             "observation": "both", "kitchen_view": "map"}})
@@ -243,7 +243,7 @@ async def test_the_planner_oracle_plays_in_vision_modes(tmp_path: Path, monkeypa
         ep = r.structured_content["episode_id"]
         for call in plan_ops("FloorPlan12", ops):
             r = await client.call_tool(call["tool"], {"episode_id": ep, **call["args"]})
-            assert not r.is_error and r.content[-1].type == "image", (call, r.content[0].text)
+            assert not r.is_error and [c.type for c in r.content[-2:]] == ["image", "resource_link"], (call, r.content[0].text)
         await client.call_tool("finish_episode", {"episode_id": ep})
     objects = json.loads((tmp_path / "runs" / ep / "final_state.json").read_text())["environments"]["embodied"][
         "objects"]

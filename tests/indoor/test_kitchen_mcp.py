@@ -125,7 +125,7 @@ async def test_vision_mode_sends_an_image_and_the_resource_serves_it(server):
         ep = await start(client, "kitchen-only", observation="vision")
         r = await client.call_tool("kitchen_rotate", {"episode_id": ep, "direction": "left"})
         kinds = [c.type for c in r.content]
-        assert kinds == ["text", "image"] and r.content[1].mime_type == "image/png"
+        assert kinds == ["text", "image", "resource_link"] and r.content[1].mime_type == "image/png"
         assert "In reach" not in r.content[0].text and "objects" not in r.structured_content["observation"]
         resource = await client.read_resource(f"ewa://episodes/{ep}/kitchen.png")
         assert resource.contents[0].mime_type == "image/png"

@@ -11,7 +11,7 @@ import anyio
 import pytest
 from mcp import Client
 
-from ewa_mcp.bound import BoundServer, bind, scrub_text, unbind_schema
+from ewa_mcp.bound import BoundServer, bind, scrub_result, scrub_text, unbind_schema
 from ewa_mcp.graders import grade_episode
 from ewa_mcp.server import ServerConfig, build_server
 
@@ -73,6 +73,20 @@ def test_unbind_schema_and_scrub_text():
     assert schema["required"] == ["episode_id", "x"]  # the full server's schema is left alone
     text = "Episode ep-1234 finished. [ep-1234 · web · step 3/9]"
     assert scrub_text(text, "ep-1234") == "The episode finished. [web · step 3/9]"
+
+
+def test_scrub_result_drops_links_that_name_the_episode():
+    from mcp_types import CallToolResult, ImageContent, ResourceLink, TextContent
+
+    result = CallToolResult(content=[
+        TextContent(type="text", text="[ep-1234 · embodied · step 1/9]"),
+        ImageContent(type="image", data="AAAA", mime_type="image/png"),
+        ResourceLink(type="resource_link", uri="ewa://episodes/ep-1234/images/1-0.png", name="1-0.png"),
+        ResourceLink(type="resource_link", uri="ewa://tasks/t-1", name="t-1"),
+    ])
+    kept = scrub_result(result, "ep-1234").content
+    assert [c.type for c in kept] == ["text", "image", "resource_link"]
+    assert str(kept[2].uri) == "ewa://tasks/t-1" and "ep-1234" not in kept[0].text
 
 
 def test_serve_bind_task_over_stdio(tmp_path):

@@ -10,15 +10,16 @@ from __future__ import annotations
 from .scene import ShopSign, Vehicle, ViewSpec
 from .styles import TREE_WORDS, VEHICLE_WORDS
 
+# Each kind's sign carries a pictogram at its left end (view_images.shop_pictogram draws it).
 SHOP_KIND_LOOKS = {
     "pharmacy": "with a green cross",
-    "bakery": "with loaves in the window",
-    "cafe": "with small tables outside",
-    "restaurant": "with a menu board by the door",
-    "bank": "with a cash machine in the wall",
-    "hotel": "over a glass entrance",
-    "grocery": "with crates of fruit and vegetables outside",
-    "books": "with books in the window",
+    "bakery": "with a loaf of bread pictured on the sign",
+    "cafe": "with a coffee cup pictured on the sign",
+    "restaurant": "with a knife and fork pictured on the sign",
+    "bank": "with a gold coin pictured on the sign",
+    "hotel": "with a bed pictured on the sign",
+    "grocery": "with a red apple pictured on the sign",
+    "books": "with an open book pictured on the sign",
 }
 
 
@@ -52,9 +53,38 @@ def _plate_sentence(v: Vehicle) -> str:
             f"reading '{p.text}'{caption}.")
 
 
+def plate_cues(v: Vehicle) -> set[str]:
+    """The cue ids of a car's number plate: its colours (front or rear), and its text when legible."""
+    assert v.plate is not None
+    p = v.plate
+    out = {f"plate_colours:{p.style.describe_colours(rear=p.rear)}"}
+    if p.text is not None:
+        out.add(f"plate_text:{p.text}")
+        if p.caption:
+            out.add(f"plate_caption:{p.caption}")
+    return out
+
+
+def shop_cues(sign: ShopSign) -> set[str]:
+    """The cue ids of a shop sign: its kind's look and each line's text, in its own script."""
+    out = {f"shop:{sign.kind}"} | {f"sign_text:{t.native}" for t in sign.lines}
+    if sign.phone:
+        out.add(f"phone:{sign.phone}")
+    return out
+
+
 def describe_view(spec: ViewSpec) -> str:
+    return describe_view_cues(spec)[0]
+
+
+def describe_view_cues(spec: ViewSpec) -> tuple[str, frozenset[str]]:
+    """The description and the ids of the cues it names (scene.py's cue ids; the renderer reports the ids
+    it draws, and a test checks that every cue the text names is drawn)."""
     s: list[str] = []
+    cues: set[str] = {f"composition:{spec.composition}", f"arch:{spec.arch_key}", f"sky:{spec.climate.sky_words}"}
     heading = spec.heading
+    if spec.pedestrian:
+        cues.add("pedestrian")
     if spec.composition == "along":
         kind = "a pedestrian street paved wall to wall" if spec.pedestrian else "a two-way street"
         s.append(f"Looking {heading} along {kind}.")
@@ -65,9 +95,11 @@ def describe_view(spec: ViewSpec) -> str:
         s.append(f"Looking {heading} across a large open square.")
     if spec.landmark is not None:
         s.append(spec.landmark.description[0].upper() + spec.landmark.description[1:] + ".")
+        cues.add(f"landmark:{spec.landmark.kind}")
     s.append(f"Buildings: {spec.arch.description}.")
 
     if not spec.pedestrian:
+        cues.add(f"drive:{spec.drive}")
         other = "left" if spec.drive == "right" else "right"
         if spec.composition == "along":
             s.append(f"Traffic keeps to the {spec.drive}: cars on the {spec.drive}-hand side of the road drive away "
@@ -80,28 +112,36 @@ def describe_view(spec: ViewSpec) -> str:
         marks = []
         if spec.centre_line:
             marks.append(f"a dashed {spec.centre_line} centre line")
+            cues.add(f"centre_line:{spec.centre_line}")
         if spec.edge_line and spec.edge_line != "white":
             marks.append(f"{spec.edge_line} lines along the road edges")
+            cues.add(f"edge_line:{spec.edge_line}")
         if marks:
             s.append("Road markings: " + " and ".join(marks) + ".")
 
     plated = [v for v in spec.vehicles if v.plate is not None and v.facing == "away"]
     if plated:
         s.append(_plate_sentence(plated[0]))
+        cues |= plate_cues(plated[0])
     specials = [v for v in spec.vehicles if v.kind != "car"]
     if specials:
         s.append("Also in view: " + "; ".join(_vehicle_phrase(v) for v in specials) + ".")
+        cues |= {f"vehicle:{v.kind}" for v in specials}
     if spec.tram_tracks:
         s.append("Tram tracks run along the street under an overhead wire.")
+        cues.add("tram_tracks")
     if spec.skytrain:
         s.append(VEHICLE_WORDS["skytrain"][0].upper() + VEHICLE_WORDS["skytrain"][1:] + ".")
+        cues.add("skytrain")
     if spec.arch.wires:
         s.append("Dense bundles of overhead cables hang from poles.")
+        cues.add("wires")
 
     if spec.trees:
         kinds = []
         for kind, _side, _depth in spec.trees:
             words = TREE_WORDS.get(kind, kind)
+            cues.add(f"tree:{kind}")
             if words not in kinds:
                 kinds.append(words)
         s.append("Trees: " + ", ".join(kinds) + ".")
@@ -114,9 +154,11 @@ def describe_view(spec: ViewSpec) -> str:
             else:
                 where = f"on building {int(sign.side[1:]) + 1} from the left"
             parts.append(_shop(sign, where))
+            cues |= shop_cues(sign)
         s.append("Shop signs: " + "; ".join(parts) + ".")
     if spec.street_sign is not None:
         ss = spec.street_sign
         s.append(f"A street-name sign ({ss.style.words}) on the {ss.side} reads '{_quote(ss.lines)}'.")
+        cues |= {f"street_sign_text:{t.native}" for t in ss.lines} | {f"street_sign_style:{ss.style.words}"}
     s.append(f"Sky: {spec.climate.sky_words}.")
-    return " ".join(s)
+    return " ".join(s), frozenset(cues)

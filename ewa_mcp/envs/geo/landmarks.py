@@ -310,7 +310,10 @@ KINDS: dict[str, Callable[[Draw, random.Random, int], None]] = {
 }
 
 
-def draw_landmark(d: Draw, kind: str, rng: random.Random, horizon: int) -> None:
+def draw_landmark(d: Draw, kind: str, rng: random.Random, horizon: int) -> bool:
+    """Draw the landmark of ``kind``; False when no drawing exists for it."""
     fn = KINDS.get(kind)
-    if fn is not None:
-        fn(d, rng, horizon)
+    if fn is None:
+        return False
+    fn(d, rng, horizon)
+    return True

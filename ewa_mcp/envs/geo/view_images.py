@@ -39,7 +39,10 @@ FACADE_X = 0.8
 
 
 # ------------------------------------------------------------------------------ text
-def _drawable_lines(lines: tuple[Text, ...]) -> list[tuple[str, str]]:
+def _drawable_lines(lines: tuple[Text, ...], cues: set[str] | None = None,
+                    cue: str = "sign_text") -> list[tuple[str, str]]:
+    """The (text, script) lines to draw; with ``cues``, adds ``{cue}:{native}`` for each line drawn in its
+    own spelling (a line whose script has no font here is drawn transliterated, which is not the cue)."""
     out = []
     native_lines = [fonts.drawable(t.native, t.latin) for t in lines]
     for (text, script), original in zip(native_lines, lines, strict=True):
@@ -48,12 +51,15 @@ def _drawable_lines(lines: tuple[Text, ...]) -> list[tuple[str, str]]:
         ):
             continue  # a companion Latin line exists: don't add a transliteration too
         out.append((text, script))
+        if cues is not None and text == original.native:
+            cues.add(f"{cue}:{text}")
     return out or [(lines[0].latin, "latin")]
 
 
 # ------------------------------------------------------------------------------ sky and ground
-def _sky(img: Image.Image, spec: ViewSpec, horizon: int) -> None:
+def _sky(img: Image.Image, spec: ViewSpec, horizon: int, cues: set[str]) -> None:
     draw = ImageDraw.Draw(img)
+    cues.add(f"sky:{spec.climate.sky_words}")
     sky_gradient(draw, W, horizon, rgb(spec.climate.sky_top), rgb(spec.climate.sky_bottom))
     for cx, cy, size in spec.clouds:
         x, y = cx * W, cy * horizon
@@ -116,8 +122,9 @@ def _roof(draw: ImageDraw.ImageDraw, side: int, z0: float, z1: float, top: float
 BUILDING_SPANS = ((0.7, 2.0), (2.0, 3.6), (3.6, 5.6), (5.6, 8.5))
 
 
-def _along_buildings(draw: ImageDraw.ImageDraw, spec: ViewSpec) -> None:
+def _along_buildings(draw: ImageDraw.ImageDraw, spec: ViewSpec, cues: set[str]) -> None:
     arch = spec.arch
+    cues.add(f"arch:{spec.arch_key}")
     for side, row in ((-1, spec.buildings_left), (1, spec.buildings_right)):
         for (z0, z1), b in reversed(list(zip(BUILDING_SPANS, row, strict=True))):
             height = b.floors * 0.32
@@ -161,10 +168,11 @@ def _along_buildings(draw: ImageDraw.ImageDraw, spec: ViewSpec) -> None:
     draw.rectangle([xl, top, xr, yb], fill=rgb(spec.arch.palette[-1]))
 
 
-def _along_ground(draw: ImageDraw.ImageDraw, spec: ViewSpec) -> None:
+def _along_ground(draw: ImageDraw.ImageDraw, spec: ViewSpec, cues: set[str]) -> None:
     pave = rgb(spec.arch.pavement)
     draw.polygon([(0, H), (W, H), (W, HY), (0, HY)], fill=pave)
     if spec.pedestrian:
+        cues.add("pedestrian")
         for i in range(1, 12):
             u = 1 / (1 + i * 0.7)
             draw.line([_p(-FACADE_X, 0, u), _p(FACADE_X, 0, u)], fill=shade(spec.arch.pavement, 0.88), width=1)
@@ -179,7 +187,9 @@ def _along_ground(draw: ImageDraw.ImageDraw, spec: ViewSpec) -> None:
         for side in (-1, 1):
             draw.line([_p(side * (ROAD_HALF - 0.04), 0, 1.4), _p(side * (ROAD_HALF - 0.04), 0, 0.01)], fill=colour,
                       width=2)
+        cues.add(f"edge_line:{spec.edge_line}")
     if spec.centre_line:
+        cues.add(f"centre_line:{spec.centre_line}")
         colour = (235, 190, 0) if spec.centre_line == "yellow" else (240, 240, 240)
         z = 1.0
         while z < 30:
@@ -220,46 +230,107 @@ def _wires(draw: ImageDraw.ImageDraw, spec: ViewSpec) -> None:
 
 
 # ------------------------------------------------------------------------------ signs
-def _sign_box(draw: ImageDraw.ImageDraw, box: tuple[float, float, float, float], sign: ShopSign) -> None:
-    draw.rectangle(box, fill=rgb(sign.bg), outline=(30, 30, 30))
-    lines = _drawable_lines(sign.lines)
-    if sign.kind == "pharmacy":
-        x0, y0, x1, y1 = box
-        c = min(x1 - x0, y1 - y0) * 0.18
-        cx, cy = x0 + c * 1.4, (y0 + y1) / 2
+def shop_pictogram(draw: ImageDraw.ImageDraw, kind: str, cx: float, cy: float, c: float) -> bool:
+    """The pictogram of a shop kind (describe.SHOP_KIND_LOOKS words it), centred at (cx, cy) in a square of
+    half-side ``c``, on a white disc so it reads on any sign colour. False for a kind without one."""
+    if kind not in PICTOGRAM_KINDS:
+        return False
+    draw.ellipse([cx - c * 1.15, cy - c * 1.15, cx + c * 1.15, cy + c * 1.15], fill=(250, 250, 246))
+    if kind == "pharmacy":
         draw.rectangle([cx - c / 3, cy - c, cx + c / 3, cy + c], fill=(40, 170, 60))
         draw.rectangle([cx - c, cy - c / 3, cx + c, cy + c / 3], fill=(40, 170, 60))
+    elif kind == "bakery":  # a loaf with three slashes
+        draw.ellipse([cx - c, cy - c * 0.55, cx + c, cy + c * 0.55], fill=(196, 134, 62), outline=(110, 70, 30))
+        for dx in (-0.45, 0.0, 0.45):
+            draw.line([(cx + (dx - 0.15) * c, cy + c * 0.3), (cx + (dx + 0.15) * c, cy - c * 0.3)],
+                      fill=(240, 210, 150), width=max(1, int(c / 5)))
+    elif kind == "cafe":  # a cup with a handle on a saucer
+        draw.rectangle([cx - c * 0.6, cy - c * 0.5, cx + c * 0.3, cy + c * 0.5], fill=(110, 70, 40))
+        draw.ellipse([cx + c * 0.15, cy - c * 0.3, cx + c * 0.75, cy + c * 0.25], outline=(110, 70, 40),
+                     width=max(1, int(c / 5)))
+        draw.line([(cx - c, cy + c * 0.65), (cx + c * 0.7, cy + c * 0.65)], fill=(110, 70, 40),
+                  width=max(1, int(c / 4)))
+    elif kind == "restaurant":  # a fork and a knife side by side
+        w = max(1, int(c / 5))
+        draw.line([(cx - c * 0.4, cy - c), (cx - c * 0.4, cy + c)], fill=(40, 40, 40), width=w)
+        for dx in (-0.65, -0.4, -0.15):
+            draw.line([(cx + dx * c, cy - c), (cx + dx * c, cy - c * 0.4)], fill=(40, 40, 40), width=max(1, w // 2))
+        draw.polygon([(cx + c * 0.3, cy - c), (cx + c * 0.6, cy - c * 0.2), (cx + c * 0.4, cy - c * 0.1)],
+                     fill=(40, 40, 40))
+        draw.line([(cx + c * 0.4, cy - c * 0.2), (cx + c * 0.4, cy + c)], fill=(40, 40, 40), width=w)
+    elif kind == "bank":  # a gold coin
+        draw.ellipse([cx - c * 0.85, cy - c * 0.85, cx + c * 0.85, cy + c * 0.85], fill=(222, 180, 40),
+                     outline=(150, 110, 20), width=max(1, int(c / 6)))
+        draw.ellipse([cx - c * 0.45, cy - c * 0.45, cx + c * 0.45, cy + c * 0.45], outline=(150, 110, 20),
+                     width=max(1, int(c / 8)))
+    elif kind == "hotel":  # a bed: headboard, mattress, legs, pillow
+        draw.rectangle([cx - c, cy - c * 0.7, cx - c * 0.75, cy + c * 0.6], fill=(60, 60, 90))
+        draw.rectangle([cx - c * 0.75, cy, cx + c, cy + c * 0.3], fill=(60, 60, 90))
+        draw.rectangle([cx + c * 0.8, cy + c * 0.3, cx + c, cy + c * 0.6], fill=(60, 60, 90))
+        draw.ellipse([cx - c * 0.7, cy - c * 0.35, cx - c * 0.2, cy], fill=(60, 60, 90))
+    elif kind == "grocery":  # a red apple with a leaf
+        draw.ellipse([cx - c * 0.8, cy - c * 0.6, cx + c * 0.8, cy + c * 0.9], fill=(200, 30, 30))
+        draw.line([(cx, cy - c * 0.6), (cx + c * 0.1, cy - c)], fill=(90, 60, 30), width=max(1, int(c / 6)))
+        draw.ellipse([cx + c * 0.1, cy - c * 1.0, cx + c * 0.6, cy - c * 0.7], fill=(50, 150, 50))
+    elif kind == "books":  # an open book
+        draw.polygon([(cx, cy - c * 0.5), (cx - c, cy - c * 0.7), (cx - c, cy + c * 0.6), (cx, cy + c * 0.8)],
+                     fill=(40, 80, 160), outline=(20, 40, 90))
+        draw.polygon([(cx, cy - c * 0.5), (cx + c, cy - c * 0.7), (cx + c, cy + c * 0.6), (cx, cy + c * 0.8)],
+                     fill=(40, 80, 160), outline=(20, 40, 90))
+    return True
+
+
+PICTOGRAM_KINDS = frozenset({"pharmacy", "bakery", "cafe", "restaurant", "bank", "hotel", "grocery", "books"})
+
+
+def _sign_box(draw: ImageDraw.ImageDraw, box: tuple[float, float, float, float], sign: ShopSign,
+              cues: set[str]) -> None:
+    draw.rectangle(box, fill=rgb(sign.bg), outline=(30, 30, 30))
+    lines = _drawable_lines(sign.lines, cues)
+    x0, y0, x1, y1 = box
+    c = min(x1 - x0, y1 - y0) * 0.18
+    if shop_pictogram(draw, sign.kind, x0 + c * 1.4, (y0 + y1) / 2, c):
+        cues.add(f"shop:{sign.kind}")
         box = (x0 + c * 2.6, y0, x1, y1)
     if sign.phone:
         lines = lines + [(sign.phone, "latin")]
+        cues.add(f"phone:{sign.phone}")
     draw_centred_lines(draw, box, lines, rgb(sign.fg))
 
 
-def _street_sign_box(draw: ImageDraw.ImageDraw, box: tuple[float, float, float, float], sign: StreetSign) -> None:
+def _street_sign_box(draw: ImageDraw.ImageDraw, box: tuple[float, float, float, float], sign: StreetSign,
+                     cues: set[str]) -> None:
     style = sign.style
+    cues.add(f"street_sign_style:{style.words}")
     x0, y0, x1, y1 = box
     if style.mount == "pole":
         draw.line([((x0 + x1) / 2, y1), ((x0 + x1) / 2, y1 + 150)], fill=(110, 110, 110), width=4)
     draw.rectangle(box, fill=rgb(style.bg), outline=rgb(style.border), width=3)
-    draw_centred_lines(draw, (x0 + 4, y0 + 3, x1 - 4, y1 - 3), _drawable_lines(sign.lines), rgb(style.fg))
+    draw_centred_lines(draw, (x0 + 4, y0 + 3, x1 - 4, y1 - 3), _drawable_lines(sign.lines, cues, "street_sign_text"),
+                       rgb(style.fg))
 
 
 # ------------------------------------------------------------------------------ compositions
-def _render_along(img: Image.Image, spec: ViewSpec) -> None:
+def _render_along(img: Image.Image, spec: ViewSpec, cues: set[str]) -> None:
     draw = ImageDraw.Draw(img)
-    _sky(img, spec, HY)
-    _along_ground(draw, spec)
-    _along_buildings(draw, spec)
+    cues.add("composition:along")
+    _sky(img, spec, HY, cues)
+    _along_ground(draw, spec, cues)
+    _along_buildings(draw, spec, cues)
     if spec.tram_tracks:
         _tram_tracks_along(draw)
+        cues.add("tram_tracks")
     if spec.arch.wires:
         _wires(draw, spec)
+        cues.add("wires")
     for kind, side, depth in spec.trees:
         u = 1 / (1.4 + depth * 6)
         x, base = _p((-1 if side == "left" else 1) * 0.66, 0, u)
-        draw_tree(draw, kind, x, base, u * 1.2)
+        if draw_tree(draw, kind, x, base, u * 1.2):
+            cues.add(f"tree:{kind}")
     if spec.skytrain:
         _skytrain(draw)
+        cues.add("skytrain")
     # blade signs, nearest last
     per_side: dict[str, int] = {"left": 0, "right": 0}
     for sign in spec.shops:
@@ -270,14 +341,35 @@ def _render_along(img: Image.Image, spec: ViewSpec) -> None:
         u = 1 / z
         xa, ya = _p(side_sign * FACADE_X, 0.62, u)
         xb, yb = _p(side_sign * (FACADE_X - 0.42), 0.42, u)
-        _sign_box(draw, (min(xa, xb), ya, max(xa, xb), yb), sign)
+        _sign_box(draw, (min(xa, xb), ya, max(xa, xb), yb), sign, cues)
+    other = "left" if spec.drive == "right" else "right"
     for v in sorted(spec.vehicles, key=lambda v: -v.depth):
-        vehicle_along(draw, _p, v)
+        vehicle_along(draw, _p, v, cues)
+        # a car seen from behind in the driving-side lane (or head-on in the other) shows the traffic side
+        if v.kind == "car" and ((v.side, v.facing) in ((spec.drive, "away"), (other, "toward"))):
+            cues.add(f"drive:{spec.drive}")
     if spec.street_sign is not None:
         side_sign = -1 if spec.street_sign.side == "left" else 1
         cx = W // 2 + side_sign * 205
         n = len(spec.street_sign.lines)
-        _street_sign_box(draw, (cx - 85, 120, cx + 85, 120 + 22 * n + 10), spec.street_sign)
+        _street_sign_box(draw, (cx - 85, 120, cx + 85, 120 + 22 * n + 10), spec.street_sign, cues)
+
+
+def _side_traffic(draw: ImageDraw.ImageDraw, spec: ViewSpec, cues: set[str], positions: dict[str, tuple[float, float,
+                  float]]) -> None:
+    """Side-on vehicles of the facade and landmark views; the near lane's direction shows the traffic side
+    (with right-hand traffic, near-lane cars move from the viewer's left to right)."""
+    near_dir = "right" if spec.drive == "right" else "left"
+    in_lane: dict[str, int] = {}
+    for v in spec.vehicles:
+        lane = "near" if v.side == "near" else "far"
+        cx, bottom, scale = positions[lane]
+        k = in_lane[lane] = in_lane.get(lane, -1) + 1
+        # the next vehicles in the same lane stand apart from the first, never on top of it
+        cx += {"near": (0, 300, 160), "far": (0, -130, 130)}[lane][k % 3]
+        car_side(draw, cx, bottom, scale, v, cues)
+        if v.kind == "car" and v.side == "near" and v.facing == near_dir:
+            cues.add(f"drive:{spec.drive}")
 
 
 def _facade_row(draw: ImageDraw.ImageDraw, spec: ViewSpec, base: int, floor_px: int) -> list[tuple[int, int, int]]:
@@ -328,64 +420,80 @@ def _facade_row(draw: ImageDraw.ImageDraw, spec: ViewSpec, base: int, floor_px: 
     return spans
 
 
-def _render_facade(img: Image.Image, spec: ViewSpec) -> None:
+def _render_facade(img: Image.Image, spec: ViewSpec, cues: set[str]) -> None:
     draw = ImageDraw.Draw(img)
+    cues |= {"composition:facade", f"arch:{spec.arch_key}"}
     horizon, base, floor_px = 170, 300, 38
-    _sky(img, spec, horizon)
+    _sky(img, spec, horizon, cues)
     draw.rectangle([0, horizon, W, base], fill=shade(spec.arch.palette[0], 0.8))
     spans = _facade_row(draw, spec, base, floor_px)
     pave = rgb(spec.arch.pavement)
     draw.rectangle([0, base, W, 322], fill=pave)
-    if spec.pedestrian:
-        draw.rectangle([0, 322, W, H], fill=pave)
-        for y in range(330, H, 14):
-            draw.line([(0, y), (W, y)], fill=shade(spec.arch.pavement, 0.9))
-    else:
-        draw.rectangle([0, 322, W, H], fill=rgb(spec.climate.ground_tint))
-        draw.line([(0, 322), (W, 322)], fill=(205, 205, 200), width=3)
-        if spec.edge_line:
-            colour = (235, 190, 0) if spec.edge_line == "yellow" else (240, 240, 240)
-            draw.line([(0, 328), (W, 328)], fill=colour, width=2)
-            draw.line([(0, 396), (W, 396)], fill=colour, width=2)
-        if spec.centre_line:
-            colour = (235, 190, 0) if spec.centre_line == "yellow" else (240, 240, 240)
-            for x in range(0, W, 60):
-                draw.line([(x, 362), (x + 34, 362)], fill=colour, width=4)
+    _side_road(draw, spec, cues, 322, pave)
     if spec.tram_tracks:
         for y in (340, 350):
             draw.line([(0, y), (W, y)], fill=(90, 90, 92), width=2)
+        cues.add("tram_tracks")
     for kind, _side, depth in spec.trees:
-        draw_tree(draw, kind, 60 + depth * 800 % (W - 120), 318, 0.85)
+        if draw_tree(draw, kind, 60 + depth * 800 % (W - 120), 318, 0.85):
+            cues.add(f"tree:{kind}")
     for sign in spec.shops:
         idx = int(sign.side[1:])
         if idx >= len(spans):
             continue
         x0, x1, _top = spans[idx]
-        _sign_box(draw, (max(4, x0 + 10), base - floor_px - 26, min(W - 4, x1 - 10), base - floor_px + 4), sign)
+        _sign_box(draw, (max(4, x0 + 10), base - floor_px - 26, min(W - 4, x1 - 10), base - floor_px + 4), sign,
+                  cues)
     if spec.arch.wires:
         for y in (195, 205, 214):
             draw.line([(0, y), (W, y + 8)], fill=(30, 30, 30), width=1)
-    for v in spec.vehicles:
-        bottom = 392 if v.side == "near" else 352
-        cx = 170 if v.side == "near" else 430
-        car_side(draw, cx, bottom, 1.0 if v.side == "near" else 0.8, v)
+        cues.add("wires")
+    _side_traffic(draw, spec, cues, {"near": (170, 392, 1.0), "far": (430, 352, 0.8)})
     if spec.street_sign is not None:
         n = len(spec.street_sign.lines)
         x0 = spans[0][0] + 20 if spans else 20
-        _street_sign_box(draw, (max(8, x0), 196, max(8, x0) + 190, 196 + 22 * n + 10), spec.street_sign)
+        _street_sign_box(draw, (max(8, x0), 196, max(8, x0) + 190, 196 + 22 * n + 10), spec.street_sign, cues)
 
 
-def _render_landmark(img: Image.Image, spec: ViewSpec) -> None:
+def _side_road(draw: ImageDraw.ImageDraw, spec: ViewSpec, cues: set[str], kerb: int,
+               pave: tuple[int, int, int]) -> None:
+    """The road crossing the view from ``kerb`` down to the bottom edge (facade and landmark views): paving
+    wall to wall on pedestrian streets, else asphalt with its edge and centre lines."""
+    if spec.pedestrian:
+        draw.rectangle([0, kerb, W, H], fill=pave)
+        for y in range(kerb + 8, H, 14):
+            draw.line([(0, y), (W, y)], fill=shade(spec.arch.pavement, 0.9))
+        cues.add("pedestrian")
+        return
+    draw.rectangle([0, kerb, W, H], fill=rgb(spec.climate.ground_tint))
+    draw.line([(0, kerb), (W, kerb)], fill=(205, 205, 200), width=3)
+    mid = (kerb + H) // 2
+    if spec.edge_line:
+        colour = (235, 190, 0) if spec.edge_line == "yellow" else (240, 240, 240)
+        draw.line([(0, kerb + 6), (W, kerb + 6)], fill=colour, width=2)
+        draw.line([(0, H - 4), (W, H - 4)], fill=colour, width=2)
+        cues.add(f"edge_line:{spec.edge_line}")
+    if spec.centre_line:
+        colour = (235, 190, 0) if spec.centre_line == "yellow" else (240, 240, 240)
+        for x in range(0, W, 60):
+            draw.line([(x, mid), (x + 34, mid)], fill=colour, width=4)
+        cues.add(f"centre_line:{spec.centre_line}")
+
+
+def _render_landmark(img: Image.Image, spec: ViewSpec, cues: set[str]) -> None:
     from .landmarks import draw_landmark
 
     draw = ImageDraw.Draw(img)
+    cues |= {"composition:landmark", f"arch:{spec.arch_key}"}
     horizon = 250
-    _sky(img, spec, horizon)
+    _sky(img, spec, horizon, cues)
     pave = rgb(spec.arch.pavement)
     draw.rectangle([0, horizon, W, H], fill=pave)
     for i in range(1, 9):
         y = horizon + i * i * 2.2
         draw.line([(0, y), (W, y)], fill=shade(spec.arch.pavement, 0.9))
+    # the street along the near side of the square, with its markings, under the traffic
+    _side_road(draw, spec, cues, 318, pave)
     rng = random.Random(spec.seed)
     # low buildings on both edges of the square
     for side in (0, 1):
@@ -398,30 +506,41 @@ def _render_landmark(img: Image.Image, spec: ViewSpec) -> None:
                 wx = x + 10 + c * 22
                 wy = horizon - 16 - (f + 1) * 12
                 draw.rectangle([wx, wy, wx + 8, wy + 7], fill=shade(b.colour, 0.45))
-    draw_landmark(draw, spec.landmark.kind if spec.landmark else "", rng, horizon)
+    if spec.landmark is not None and draw_landmark(draw, spec.landmark.kind, rng, horizon):
+        cues.add(f"landmark:{spec.landmark.kind}")
     for kind, _side, depth in spec.trees:
-        draw_tree(draw, kind, 30 + depth * 900 % (W - 60), horizon + 10, 0.55)
+        if draw_tree(draw, kind, 30 + depth * 900 % (W - 60), horizon + 10, 0.55):
+            cues.add(f"tree:{kind}")
     for i, sign in enumerate(spec.shops):
         x0 = 8 if i == 0 else W - 128
-        _sign_box(draw, (x0, horizon - 14, x0 + 120, horizon + 12), sign)
-    for v in spec.vehicles:
-        bottom = 392 if v.side == "near" else 350
-        cx = 140 if v.side == "near" else 460
-        car_side(draw, cx, bottom, 0.9 if v.side == "near" else 0.7, v)
+        _sign_box(draw, (x0, horizon - 14, x0 + 120, horizon + 12), sign, cues)
+    if spec.arch.wires:  # cables strung across the square's edge from pole to pole
+        for x in (40, W - 40):
+            draw.line([(x, horizon + 60), (x, horizon - 70)], fill=(90, 80, 70), width=3)
+        for y in (-64, -58, -52):
+            draw.line([(40, horizon + y), (W - 40, horizon + y + 10)], fill=(30, 30, 30), width=1)
+        cues.add("wires")
+    _side_traffic(draw, spec, cues, {"near": (140, 392, 0.9), "far": (460, 350, 0.7)})
     if spec.street_sign is not None:
         n = len(spec.street_sign.lines)
-        _street_sign_box(draw, (W - 215, 262, W - 15, 262 + 22 * n + 10), spec.street_sign)
+        _street_sign_box(draw, (W - 215, 262, W - 15, 262 + 22 * n + 10), spec.street_sign, cues)
+
+
+def render_view_cues(spec: ViewSpec) -> tuple[Image.Image, frozenset[str]]:
+    """The view and the ids of the cues it draws (the same ids describe.describe_view_cues names)."""
+    img = Image.new("RGB", (W, H), (255, 255, 255))
+    cues: set[str] = set()
+    if spec.composition == "along":
+        _render_along(img, spec, cues)
+    elif spec.composition == "facade":
+        _render_facade(img, spec, cues)
+    else:
+        _render_landmark(img, spec, cues)
+    return img, frozenset(cues)
 
 
 def render_view(spec: ViewSpec) -> Image.Image:
-    img = Image.new("RGB", (W, H), (255, 255, 255))
-    if spec.composition == "along":
-        _render_along(img, spec)
-    elif spec.composition == "facade":
-        _render_facade(img, spec)
-    else:
-        _render_landmark(img, spec)
-    return img
+    return render_view_cues(spec)[0]
 
 
 @lru_cache(maxsize=256)

@@ -162,7 +162,15 @@ class StreetEnvironment(Environment):
             return list(ABSOLUTE_VIEWS)
         return [(label, (self.heading + off) % 360.0) for label, off in RELATIVE_VIEWS]
 
+    @property
+    def vision_only(self) -> bool:
+        """Observation "vision": the images, plus only what a camera cannot give and the action space needs
+        (the neighbour list with headings and distances). No street names, place text or view descriptions."""
+        return self.mode == "vision"
+
     def observation(self, frame: Literal["relative", "absolute"] = "relative", note: str = "") -> Observation:
+        if self.vision_only:
+            return self._vision_observation(frame, note)
         assert self.world is not None and self.graph is not None
         g = self.graph
         neighbours = self._neighbours()
@@ -188,7 +196,7 @@ class StreetEnvironment(Environment):
             text = describe(scene)
             view_data.append({"view": label, "heading": round(heading, 1), "description": text})
             lines.append(text)
-            if self.mode in ("vision", "both"):
+            if self.mode == "both":
                 images.append(view_png(g.city, self.node, int(round(heading)) % 360))
         if images:
             lines.append("Images: " + ", ".join(v["view"] for v in view_data) + " views, in that order.")
@@ -207,22 +215,61 @@ class StreetEnvironment(Environment):
         }
         return Observation(text="\n".join(lines), data=data, images=images)
 
+    def _vision_observation(self, frame: Literal["relative", "absolute"], note: str) -> Observation:
+        assert self.graph is not None
+        g = self.graph
+        neighbours = [{k: v for k, v in n.items() if k != "street"} for n in self._neighbours()]
+        lines = [note] if note else []
+        lines.append(f"You are facing {cardinal(self.heading, 16)} ({round(self.heading)}°).")
+        if self.stopped:
+            lines.append(self.stopped_sentence())
+        lines.append("Neighbours (street_move direction or neighbour id; each direction leads along one street):")
+        for n in neighbours:
+            label = n["direction"] or "(by id only)"
+            lines.append(f"- {label}: {n['node']}, heading {round(n['heading'])}° "
+                         f"({n['relative_heading']:+.0f}° relative), {n['distance_m']:.0f} m")
+        view_data: list[dict[str, Any]] = []
+        images: list[bytes] = []
+        for label, heading in self.views(frame):
+            view_data.append({"view": label, "heading": round(heading, 1), "image_index": len(images)})
+            images.append(view_png(g.city, self.node, int(round(heading)) % 360))
+        lines.append("Images: " + ", ".join(f"{v['view']} ({round(v['heading'])}°)" for v in view_data)
+                     + " views, in that order; a compass strip along each image's bottom edge shows its bearing.")
+        lines.append(f"Walked {len(self.path) - 1} moves, {self.distance_walked_m:.0f} m.")
+        data = {
+            "node": g.ids[self.node],
+            "heading": round(self.heading, 1),
+            "stopped": self.stopped,
+            "walk_stopped": self.stopped,
+            "neighbours": neighbours,
+            "views": view_data,
+            "moves": len(self.path) - 1,
+            "distance_walked_m": round(self.distance_walked_m, 1),
+        }
+        return Observation(text="\n".join(lines), data=data, images=images)
+
     async def observe(self) -> Observation:
         return self.observation()
 
     # ------------------------------------------------------------ acting
     def stopped_sentence(self) -> str:
-        return f"Walk stopped at {self.where()}; call finish_episode to end the episode."
+        where = "here" if self.vision_only else f"at {self.where()}"
+        return f"Walk stopped {where}; call finish_episode to end the episode."
+
+    def _street(self, n: dict[str, Any]) -> str:
+        """A neighbour's street for messages: in vision-only mode its direction and id, never its name."""
+        return f"{n['relative_heading']:+.0f}°" if self.vision_only else n["street"]
 
     def _choices(self) -> str:
         nb = self._neighbours()
-        labelled = [f"{n['direction']} ({n['street']}, {n['node']})" for n in nb if n["direction"]]
+        labelled = [f"{n['direction']} ({self._street(n)}, {n['node']})" for n in nb if n["direction"]]
         return (f"valid directions here: {', '.join(labelled) or 'none'}; "
                 f"valid neighbour ids: {', '.join(n['node'] for n in nb) or 'none'}")
 
     def _refuse_after_stop(self) -> None:
         if self.stopped:
-            raise EnvError(f"the walk is over: it stopped at {self.where()} (street_stop), and moves are refused. "
+            where = "" if self.vision_only else f" at {self.where()}"
+            raise EnvError(f"the walk is over: it stopped{where} (street_stop), and moves are refused. "
                            "Call finish_episode to end the episode.")
 
     def _pick(self, direction: str) -> tuple[int, float, int, float]:
@@ -240,8 +287,9 @@ class StreetEnvironment(Environment):
         if not in_sector:
             raise EnvError(f"there is no street to the {direction} here; {self._choices()}")
         if len(in_sector) > 1:
-            options = "; ".join(f"direction={n['direction']!r} or neighbour={n['node']!r} ({n['street']}, "
-                                f"{n['relative_heading']:+.0f}°)" for n in in_sector)
+            options = "; ".join(f"direction={n['direction']!r} or neighbour={n['node']!r} ("
+                                + ("" if self.vision_only else f"{n['street']}, ")
+                                + f"{n['relative_heading']:+.0f}°)" for n in in_sector)
             raise EnvError(f"{direction!r} is ambiguous here: {len(in_sector)} streets lead that way. Choose one: "
                            f"{options}")
         return links[in_sector[0]["node"]]
@@ -267,7 +315,8 @@ class StreetEnvironment(Environment):
         self.heading = h
         self.path.append(self.graph.ids[j])
         self.distance_walked_m += length
-        return self.observation(note=f"Moved {length:.0f} m along {self.graph.streets[s]}.")
+        along = "" if self.vision_only else f" along {self.graph.streets[s]}"
+        return self.observation(note=f"Moved {length:.0f} m{along}.")
 
     def stop(self) -> Observation:
         self._refuse_after_stop()

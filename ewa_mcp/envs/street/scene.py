@@ -196,16 +196,50 @@ def compute_scene(world: World, graph: CityGraph, i: int, heading: float, label:
             scene.frontages.append(Frontage(side, round(max(along, 3.0), 1), round(abs(lateral), 1), round(d, 1),
                                             round(rel, 1), p.kind, p.name if p.kind in SIGN_KINDS else None,
                                             _style(p), float(height) if height else None, p.description_hint, p.id))
-        elif height and float(height) >= SKYLINE_MIN_HEIGHT_M and d <= SKYLINE_RANGE_M and abs(rel) <= 40.0:
+        elif (height and float(height) >= SKYLINE_MIN_HEIGHT_M and d <= SKYLINE_RANGE_M and abs(rel) <= 40.0
+              and seen_over_roofs(rel, d, float(height))):
             scene.skyline.append(SkylineItem(round(rel, 1), round(d, 1), float(height), _style(p),
                                              p.description_hint, p.id))
     scene.open_space = open_space_this_way(world, graph, i, heading)
+    scene.skyline = _unhidden(scene.skyline)
+    if not scene.road_ahead and not scene.open_space:
+        scene.skyline = []  # building fronts across the sidewalk, a few metres away, hide every far tower
     scene.frontages.sort(key=lambda f: f.range_m)
     scene.skyline.sort(key=lambda s: -s.distance_m)
     streets = graph.node_streets[i]
     if len(streets) >= 2:
         scene.street_signs = list(streets)
     return scene
+
+
+# The street's building fronts stand this far to either side (street_view.FACADE_X_M), and the lowest
+# building drawn in front of a far tower is one storey (street_view.MIN_ROOF_M) above a 1.7 m eye.
+FRONTS_LATERAL_M = 11.0
+ROOF_OVER_EYE_M = 4.0 - 1.7
+SKYLINE_SHOWN = 0.4  # the share of a tower's height that must clear the roofs in front of it
+
+
+def seen_over_roofs(rel_angle: float, distance_m: float, height_m: float) -> bool:
+    """Whether a far tower this many degrees off the view axis shows over the street's nearer roofs: the
+    front it is seen across stands at depth 11 m / tan(angle), and even a one-storey building there must
+    leave the top SKYLINE_SHOWN of the tower in sight (what the picture draws: street_view caps the
+    roofs in front of a named tower, down to one storey)."""
+    angle = min(89.0, abs(rel_angle) + 2.0)  # the tower's own width, about 2 degrees either side
+    depth = FRONTS_LATERAL_M / max(1e-6, math.tan(math.radians(angle)))
+    return SKYLINE_SHOWN * height_m * depth / distance_m >= ROOF_OVER_EYE_M
+
+
+def _unhidden(items: list[SkylineItem]) -> list[SkylineItem]:
+    """The skyline without the towers wholly behind a nearer one (narrower and lower in sight): drawn far
+    to near, the nearer would cover them."""
+    kept: list[SkylineItem] = []
+    for item in sorted(items, key=lambda s: s.distance_m):
+        half = math.degrees(math.atan(40.0 / item.distance_m))
+        covered = any(abs(item.rel_angle - k.rel_angle) + half <= math.degrees(math.atan(40.0 / k.distance_m))
+                      and item.height_m / item.distance_m <= k.height_m / k.distance_m for k in kept)
+        if not covered:
+            kept.append(item)
+    return kept
 
 
 def opening_words(o: Opening) -> str:
@@ -255,3 +289,26 @@ def describe(scene: Scene) -> str:
     if scene.street_signs:
         parts.append("Street signs here: " + " / ".join(scene.street_signs) + ".")
     return " ".join(parts)
+
+
+def text_cues(scene: Scene) -> frozenset[str]:
+    """The ids of the visible things ``describe`` names (street_view.render_cues reports the ids it draws;
+    a test checks these are a subset). Street names away from a corner's signs are map knowledge the
+    text adds, not something a camera shows, so they have no id; the corner's signs do."""
+    from .street_view import details_of  # the words -> drawn details table lives with the drawing
+
+    cues = {"road_ahead" if scene.road_ahead else "road_ends"}
+    if scene.road_ahead:
+        cues |= {f"opening:{o.side}:{round(o.distance_m)}" for o in scene.openings[:3]}
+    elif scene.open_space:
+        cues.add("open_space")
+    for f in scene.frontages[:5]:
+        if f.sign:
+            cues.add(f"sign:{f.sign}")
+        if f.style or details_of(f.hint):
+            cues.add(f"facade:{f.place_id}")
+            cues |= {f"detail:{f.place_id}:{d}" for d in details_of(f.hint)}
+    for item in sorted(scene.skyline, key=lambda s: s.distance_m)[:2]:
+        cues.add(f"skyline:{item.place_id}")
+    cues |= {f"street_sign:{name}" for name in scene.street_signs}
+    return frozenset(cues)

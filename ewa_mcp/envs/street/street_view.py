@@ -13,15 +13,17 @@ architectural style and the details a place's description names are this world's
 
 from __future__ import annotations
 
+import math
 import random
 
 from PIL import Image, ImageDraw
 
 from ewa_mcp.street_drawing.camera import Camera
+from ewa_mcp.street_drawing.compass import draw_compass_strip
 from ewa_mcp.street_drawing.png import encode_png
 from ewa_mcp.street_drawing.sky import sky_gradient
 from ewa_mcp.street_drawing.text import bundled_font
-from .scene import Frontage, Scene
+from .scene import SKYLINE_SHOWN, Frontage, Scene
 
 WIDTH, HEIGHT = 480, 330  # large enough for a lion by a door or a clock on a tower to read
 CAMERA_HEIGHT_M = 1.7
@@ -151,17 +153,17 @@ def details_of(hint: str) -> set[str]:
     return {name for name, words in DETAIL_WORDS.items() if any(w in text for w in words)}
 
 
-def draw_details(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], hint: str) -> None:
+def draw_details(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], hint: str) -> set[str]:
     """Draw on a facade quadrilateral the visible details its description names (lions by the door, a
     clock, a dome, a statue on top, a spire, columns, an arched door, steps, neon, an awning, globe
     lamps, trees, twin towers, flags), so a vision agent sees what the text tells."""
     found = details_of(hint)
     if not found:
-        return
+        return set()
     (bx0, by0), (tx0, ty0), (tx1, ty1), (bx1, by1) = quad
     near_h = by0 - ty0
     if near_h < 6:
-        return
+        return set()
 
     def at(t: float, u: float) -> tuple[float, float]:  # t along the facade (0 near), u up (0 ground)
         bx, by = bx0 + (bx1 - bx0) * t, by0 + (by1 - by0) * t
@@ -239,6 +241,7 @@ def draw_details(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], hin
             x, y = at(t, 0.0)
             draw.line([(x, y), (x, y - unit * 2.5)], fill=(90, 60, 40), width=max(2, int(unit * 0.4)))
             draw.ellipse([x - unit * 1.8, y - unit * 5.5, x + unit * 1.8, y - unit * 2.0], fill=(60, 130, 60))
+    return found
 
 
 def _sky_and_ground(draw: ImageDraw.ImageDraw, cam: Camera) -> None:
@@ -253,13 +256,54 @@ def _hazed(rgb: tuple[int, int, int]) -> tuple[int, int, int]:
     return r, g, b
 
 
+def _skyline_box(item, cam: Camera) -> tuple[float, float, float, tuple[int, int, int]]:
+    """Where a skyline tower is drawn: its centre column, half width, top row, and its hazed colour."""
+    x = cam.screen_x(item.rel_angle)
+    top = cam.horizon - min(cam.horizon - 4, item.height_m * cam.focal / item.distance_m)
+    half = max(3.0, 40.0 * cam.focal / item.distance_m)
+    colour = _hazed(STYLE_PALETTES.get(_style_key(item.style), ((150, 160, 172), (0, 0, 0)))[0])
+    return x, half, top, colour
+
+
+MIN_ROOF_M = 4.0  # the lowest a building is drawn when lowered under a skyline tower (one storey)
+
+
+def _skyline_windows(scene: Scene, cam: Camera) -> list[tuple[float, float, float]]:
+    """(x0, x1, lowest roof row) per skyline tower the text names: nearer ordinary buildings in those columns
+    are drawn low enough for the tower's top to show over their roofs, as it does in the text."""
+    out = []
+    for item in sorted(scene.skyline, key=lambda s: s.distance_m)[:2]:
+        x, half, top, _ = _skyline_box(item, cam)
+        out.append((x - half, x + half, top + (cam.horizon - top) * SKYLINE_SHOWN))
+    return out
+
+
+def _capped_height(height: float, cam: Camera, plane_x: float | None, z0: float, z1: float,
+                   windows: list[tuple[float, float, float]]) -> float:
+    """``height`` lowered (to one storey at least) so that the roof of a front on the plane x = ``plane_x``
+    (None: across the view at depth z0) stays below every window it overlaps, measured at the depth where
+    the front meets the window's columns."""
+    if plane_x is None:
+        lo, hi = cam.project(-60, 0, z0)[0], cam.project(60, 0, z0)[0]
+    else:
+        lo, hi = sorted((cam.project(plane_x, 0, z0)[0], cam.project(plane_x, 0, z1)[0]))
+    for x0, x1, row in windows:
+        if hi < x0 or lo > x1:
+            continue
+        z = z0
+        if plane_x is not None:  # the depth of the front at the window's column nearest the screen edge
+            edge = x0 if plane_x < 0 else x1
+            if (edge - cam.cx) * plane_x > 0:
+                z = min(max(plane_x * cam.focal / (edge - cam.cx), z0), z1)
+        cap = cam.eye_height + (cam.horizon - row) * z / cam.focal
+        height = min(height, max(MIN_ROOF_M, cap))
+    return height
+
+
 def _skyline(draw: ImageDraw.ImageDraw, scene: Scene, cam: Camera) -> None:
     for item in scene.skyline:
-        x = cam.screen_x(item.rel_angle)
-        top = cam.horizon - min(cam.horizon - 4, item.height_m * cam.focal / item.distance_m)
-        half = max(3.0, 40.0 * cam.focal / item.distance_m)
+        x, half, top, colour = _skyline_box(item, cam)
         key = _style_key(item.style)
-        colour = _hazed(STYLE_PALETTES.get(key, ((150, 160, 172), (0, 0, 0)))[0])
         if key == "art deco":
             draw.rectangle([x - half, top + (cam.horizon - top) * 0.25, x + half, cam.horizon], fill=colour)
             draw.rectangle([x - half * 0.6, top + (cam.horizon - top) * 0.1, x + half * 0.6, cam.horizon], fill=colour)
@@ -284,18 +328,25 @@ def _side_segments(scene: Scene, side: str, end: float) -> list[tuple[float, flo
     return segs
 
 
-def _draw_sign(draw: ImageDraw.ImageDraw, cam: Camera, side: str, z: float, text: str, colour: tuple[int, int, int]) -> None:
+def _draw_sign(draw: ImageDraw.ImageDraw, cam: Camera, side: str, z: float, text: str, colour: tuple[int, int, int],
+               cues: set[str]) -> None:
     x = FACADE_X_M - 0.1 if side == "right" else -FACADE_X_M + 0.1
     z0, z1 = max(2.5, z - 6), z + 6
     p = [cam.project(x, 3.0, z0), cam.project(x, 4.6, z0), cam.project(x, 4.6, z1), cam.project(x, 3.0, z1)]
     draw.polygon(p, fill=colour, outline=(20, 20, 20))
-    size = int(1.3 * cam.focal / max(z, 3.0))
-    if size >= 7:
-        cx = (p[0][0] + p[3][0]) / 2
-        cy = (p[0][1] + p[1][1] + p[2][1] + p[3][1]) / 4
-        fnt = bundled_font(min(18, size))
-        w = draw.textlength(text, font=fnt)
-        draw.text((cx - w / 2, cy - size / 2), text, font=fnt, fill=(250, 250, 250))
+    # Letters scale with distance, but never below a legible 8 px: a far board is drawn larger than life
+    # (a label-sized board over it), so every sign the text quotes can be read in the picture too.
+    size = max(8, int(1.3 * cam.focal / max(z, 3.0)))
+    cx = (p[0][0] + p[3][0]) / 2
+    cy = (p[0][1] + p[1][1] + p[2][1] + p[3][1]) / 4
+    fnt = bundled_font(min(18, size))
+    w = draw.textlength(text, font=fnt)
+    board_h = abs(p[0][1] - p[1][1])
+    if board_h < size + 2 or abs(p[3][0] - p[0][0]) < w:
+        draw.rectangle([cx - w / 2 - 3, cy - size / 2 - 2, cx + w / 2 + 3, cy + size / 2 + 3], fill=colour,
+                       outline=(20, 20, 20))
+    draw.text((cx - w / 2, cy - size / 2), text, font=fnt, fill=(250, 250, 250))
+    cues.add(f"sign:{text}")
 
 
 def _sign_colour(name: str) -> tuple[int, int, int]:
@@ -304,12 +355,19 @@ def _sign_colour(name: str) -> tuple[int, int, int]:
 
 
 def render(scene: Scene, cam: Camera | None = None) -> Image.Image:
+    return render_cues(scene, cam)[0]
+
+
+def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, frozenset[str]]:
+    """The view and the ids of what it draws (scene.text_cues names the ids the text gives)."""
+    cues: set[str] = set()
     cam = cam or STREET_CAMERA
     rng = random.Random(scene.seed)
     img = Image.new("RGB", (cam.width, cam.height), SKY)
     draw = ImageDraw.Draw(img)
     _sky_and_ground(draw, cam)
     _skyline(draw, scene, cam)
+    windows = _skyline_windows(scene, cam)
     end = scene.ahead_length_m if scene.road_ahead else 16.0
     end = max(end, 16.0)
     far = min(end, 240.0)
@@ -317,6 +375,7 @@ def render(scene: Scene, cam: Camera | None = None) -> Image.Image:
         road = [cam.project(-ROAD_HALF_M, 0, 2.0), cam.project(-ROAD_HALF_M, 0, far), cam.project(ROAD_HALF_M, 0, far),
                 cam.project(ROAD_HALF_M, 0, 2.0)]
         draw.polygon(road, fill=ROAD)
+        cues.add("road_ahead")
         for dash_z in range(4, int(far), 12):  # centre line dashes
             draw.line([cam.project(0, 0, dash_z), cam.project(0, 0, dash_z + 5)], fill=LANE, width=2)
         for o in scene.openings:  # cross streets: tarmac reaching out sideways
@@ -325,11 +384,17 @@ def render(scene: Scene, cam: Camera | None = None) -> Image.Image:
                 draw.polygon([cam.project(sgn * ROAD_HALF_M, 0, o.distance_m - 6), cam.project(sgn * 60, 0, o.distance_m - 6),
                               cam.project(sgn * 60, 0, o.distance_m + 6), cam.project(sgn * ROAD_HALF_M, 0, o.distance_m + 6)],
                              fill=ROAD)
+                cues.add(f"opening:{o.side}:{round(o.distance_m)}")
         if far < AHEAD_END_WALL:
-            _end_wall(draw, cam, far + 12, rng)
+            _end_wall(draw, cam, far + 12, rng, windows=windows)
+    elif scene.open_space:
+        cues.add("road_ends")
+        _open_ground(draw, cam, rng)
+        cues.add("open_space")
     else:
+        cues.add("road_ends")
         facing = next((f for f in scene.frontages if f.side == "ahead" and f.range_m <= 40), None)
-        _end_wall(draw, cam, 14.0, rng, facing)
+        _end_wall(draw, cam, 14.0, rng, facing, cues)
     # Facades, far to near, both sides.
     landmarks: dict[str, list[Frontage]] = {"left": [], "right": []}
     for f in scene.frontages:
@@ -345,34 +410,92 @@ def render(scene: Scene, cam: Camera | None = None) -> Image.Image:
                            and z - 10 <= f.distance_m <= z + w + 10), None)
                 pieces.append((z, side, z, z + w, lm))
                 z += w
+    # A described place no street-side piece took (straight ahead, or its entrance in a cross street's
+    # gap) still gets its own front, where it stands, so the picture shows what the text names.
+    placed = {lm.place_id for *_, lm in pieces if lm is not None}
+    if not scene.road_ahead and not scene.open_space:
+        placed |= {f.place_id for f in scene.frontages if f.side == "ahead" and f.range_m <= 40}
+    for f in scene.frontages[:5]:
+        if f.place_id in placed or not (f.style or details_of(f.hint)):
+            continue
+        z = min(max(f.distance_m, 4.0), max(far, 4.0))
+        pieces.append((z, f.side if f.side != "ahead" else "ahead", z - 8, z + 8, f))
+        placed.add(f.place_id)
     for _, side, z0, z1, lm in sorted(pieces, key=lambda p: -p[0]):
+        if side == "ahead" and lm is not None:  # a front facing the camera, at the place's bearing
+            z = max((z0 + z1) / 2, 8.0)
+            cx = z * math.tan(math.radians(lm.rel_angle))
+            height = min(80.0, max(18.0, lm.height_m or 30.0))
+            if windows and not lm.height_m:
+                height = _capped_height(height, cam, None, z, z, windows)
+            quad = [cam.project(cx - 12, 0, z), cam.project(cx - 12, height, z), cam.project(cx + 12, height, z),
+                    cam.project(cx + 12, 0, z)]
+            draw_facade(draw, quad, lm.style, rng, floors=max(3, int(height / 4)))
+            cues.add(f"facade:{lm.place_id}")
+            cues |= {f"detail:{lm.place_id}:{d}" for d in draw_details(draw, quad, lm.hint)}
+            continue
         x = FACADE_X_M if side == "right" else -FACADE_X_M
         height = rng.uniform(12, 40) if lm is None else min(80.0, max(18.0, (lm.height_m or 30.0)))
+        if windows and (lm is None or not lm.height_m):  # a place of unknown height is no taller than needed
+            height = _capped_height(height, cam, x, z0, z1, windows)
         quad = [cam.project(x, 0, z0), cam.project(x, height, z0), cam.project(x, height, z1), cam.project(x, 0, z1)]
         draw_facade(draw, quad, lm.style if lm else "", rng, floors=max(3, int(height / 4)))
         if lm is not None:
-            draw_details(draw, quad, lm.hint)
+            cues.add(f"facade:{lm.place_id}")
+            cues |= {f"detail:{lm.place_id}:{d}" for d in draw_details(draw, quad, lm.hint)}
     for f in sorted(scene.frontages, key=lambda f: -f.distance_m):
         if f.sign and f.side in ("left", "right"):
-            _draw_sign(draw, cam, f.side, f.distance_m, f.sign, _sign_colour(f.sign))
+            _draw_sign(draw, cam, f.side, f.distance_m, f.sign, _sign_colour(f.sign), cues)
         elif f.sign and f.side == "ahead":
-            _draw_sign(draw, cam, "right", f.distance_m, f.sign, _sign_colour(f.sign))
+            _draw_sign(draw, cam, "right", f.distance_m, f.sign, _sign_colour(f.sign), cues)
     if scene.street_signs:
-        _street_sign(draw, cam, scene.street_signs)
-    return img
+        _street_sign(draw, cam, scene.street_signs, cues)
+    # A skyline tower counts as drawn only where some of it is still in sight over the nearer roofs.
+    for item in scene.skyline:
+        x, half, top, colour = _skyline_box(item, cam)
+        box = (int(max(0, x - half)), int(max(0, top)), int(min(cam.width, x + half + 1)), int(cam.horizon))
+        if box[2] > box[0] and box[3] > box[1] and any(c == colour for _, c in
+                                                        img.crop(box).getcolors(maxcolors=1 << 16) or []):
+            cues.add(f"skyline:{item.place_id}")
+    draw_compass_strip(draw, cam.width, cam.height, scene.heading)
+    return img, frozenset(cues)
+
+
+def _open_ground(draw: ImageDraw.ImageDraw, cam: Camera, rng: random.Random) -> None:
+    """Open ground across the sidewalk (a park): a lawn with trees, and far buildings over the tree line."""
+    h = cam.horizon
+    draw.rectangle([0, h - 18, cam.width, h], fill=(150, 150, 146))  # the far side's buildings, low
+    lawn = [cam.project(-80, 0, 6.0), cam.project(-400, 0, 400), cam.project(400, 0, 400), cam.project(80, 0, 6.0)]
+    draw.polygon(lawn, fill=(96, 150, 72))
+    draw.rectangle([0, cam.project(0, 0, 6.0)[1], cam.width, cam.height], fill=SIDEWALK)
+    for _ in range(9):
+        z = 14 + rng.uniform(0, 70)
+        x = rng.uniform(-40, 40)
+        bx, by = cam.project(x, 0, z)
+        _, ty = cam.project(x, 4.0, z)
+        r = 3.0 * cam.focal / z
+        draw.line([(bx, by), (bx, ty)], fill=(90, 64, 44), width=max(1, int(r / 4)))
+        draw.ellipse([bx - r, ty - r * 1.4, bx + r, ty + r * 0.4], fill=(52, 112, 56))
 
 
 def _end_wall(draw: ImageDraw.ImageDraw, cam: Camera, z: float, rng: random.Random,
-              facing: Frontage | None = None) -> None:
+              facing: Frontage | None = None, cues: set[str] | None = None,
+              windows: list[tuple[float, float, float]] | None = None) -> None:
     """The building fronts across the end of the view; the place straight ahead, if any, in its style."""
-    quad = [cam.project(-60, 0, z), cam.project(-60, 28, z), cam.project(60, 28, z), cam.project(60, 0, z)]
+    height = 28.0
+    if windows:
+        height = _capped_height(height, cam, None, z, z, windows)
+    quad = [cam.project(-60, 0, z), cam.project(-60, height, z), cam.project(60, height, z), cam.project(60, 0, z)]
     draw_facade(draw, [quad[0], quad[1], quad[2], quad[3]], facing.style if facing else "", rng, floors=7)
     if facing is not None:
         front = [cam.project(-14, 0, z), cam.project(-14, 22, z), cam.project(14, 22, z), cam.project(14, 0, z)]
-        draw_details(draw, front, facing.hint)
+        drawn = draw_details(draw, front, facing.hint)
+        if cues is not None:
+            cues.add(f"facade:{facing.place_id}")
+            cues |= {f"detail:{facing.place_id}:{d}" for d in drawn}
 
 
-def _street_sign(draw: ImageDraw.ImageDraw, cam: Camera, names: list[str]) -> None:
+def _street_sign(draw: ImageDraw.ImageDraw, cam: Camera, names: list[str], cues: set[str]) -> None:
     fnt = bundled_font(10)
     x, y = cam.width - 8, 10
     draw.line([(x - 4, y), (x - 4, cam.height * 0.9)], fill=(50, 60, 50), width=3)  # the pole
@@ -380,6 +503,7 @@ def _street_sign(draw: ImageDraw.ImageDraw, cam: Camera, names: list[str]) -> No
         w = draw.textlength(name, font=fnt)
         draw.rectangle([x - w - 12, y, x - 2, y + 14], fill=(18, 110, 58), outline=(240, 240, 240))
         draw.text((x - w - 7, y + 1), name, font=fnt, fill=(250, 250, 250))
+        cues.add(f"street_sign:{name}")
         y += 17
 
 
