@@ -96,7 +96,7 @@ def _plate_line(country: Country, example_region: str | None) -> str:
     if style.rear_bg:
         parts[0] += f" ({colour_name(style.rear_bg)} at the back)"
     if style.band:
-        parts.append(f"the EU identifier field at the start gives the code {style.band}")
+        parts.append(f"the country-identifier field at the start gives the code {style.band}")
     if style.caption:
         parts.append("the country's name is printed over the registration")
     # The example never carries a real region code or caption: the code of one of the location
