@@ -61,8 +61,7 @@ def wrong_answers(task: dict) -> dict[str, object]:
     if kind == "cheapest":
         return ignore_cheapest(task, meta["product_id"], meta["size"])
     if kind == "size":
-        product = catalog.get_product(meta["product_id"])
-        metric = sorted((s for s in product.sizes if s.grams or s.ml), key=lambda s: s.grams or s.ml)
+        # The amount decides the size (test_size_answers_need_the_amount); positions: the suite-level test.
         return dict(ignore_cheapest(task, meta["product_id"], meta["size"]))
     if kind == "calories":
         first = meta["named_products"][0]

@@ -27,7 +27,7 @@ from pathlib import Path
 from . import gazetteer
 from .cities import CITIES, City
 from .countries import COUNTRIES, Country
-from .languages import SHOP_KINDS, language
+from .languages import language
 from .locations import LOCATIONS_LIST, Location
 from .plates import colour_name
 from .styles import ARCH, CLIMATE, TREE_NAMES, vehicle_name
