@@ -273,8 +273,13 @@ def is_colour(words: str) -> bool:
 
 
 def vehicle_look(kind: str, colour: str) -> str:
-    """The view's words for a vehicle: a local name given in place of a colour is never said."""
-    return " ".join(VEHICLE_WORDS[kind].format(colour=colour if is_colour(colour) else "").split())
+    """The view's words for a vehicle: its colours only; a local name given with or in place of a colour
+    ("black cab", "trotro") is the wiki's word, never said."""
+    seen = " ".join(w for w in colour.split() if w == "and" or all(p in COLOUR_HEX or p == "cream"
+                                                                    for p in w.split("-")))
+    seen = seen if is_colour(seen) else ""
+    text = " ".join(VEHICLE_WORDS[kind].format(colour=seen).split())
+    return "an " + text[2:] if text.startswith("a ") and text[2:3] and text[2:3] in "aeiou" else text
 
 
 def vehicle_name(kind: str, colour: str) -> str:
