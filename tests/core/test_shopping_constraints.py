@@ -3,6 +3,12 @@ stock" was passed by an agent that never looked at stock, because every store ha
 
 For each committed shopping task, the answer of each strategy that ignores one stated constraint is worked
 out from the shop's real catalogue and the street map, and must differ from the task's expected answer.
+
+Strategies that read a position (the store the product page lists first, the first or last listed size) are
+checked over the suite instead (issue 26, principle 3): the page lists the stores in one fixed order, so
+excluding its first store from every task made that store never a target and another the target of most;
+targets and answer positions are balanced, so a position or a favourite store is right about as often as
+a guess.
 """
 
 from __future__ import annotations
@@ -45,9 +51,8 @@ def nearest(task: dict, store_ids: list[str]) -> str:
 
 
 def ignore_cheapest(task: dict, product_id: str, size: str) -> dict[str, str]:
-    """Where an agent ignoring "cheapest" would order: the nearest seller, or the product page's default."""
-    return {"nearest seller": nearest(task, sellers(product_id, size)),
-            "first listed store": sellers(product_id, size)[0]}
+    """Where an agent ignoring "cheapest" would walk to: the nearest seller."""
+    return {"nearest seller": nearest(task, sellers(product_id, size))}
 
 
 def wrong_answers(task: dict) -> dict[str, object]:
@@ -56,11 +61,8 @@ def wrong_answers(task: dict) -> dict[str, object]:
     if kind == "cheapest":
         return ignore_cheapest(task, meta["product_id"], meta["size"])
     if kind == "size":
-        product = catalog.get_product(meta["product_id"])
-        metric = sorted((s for s in product.sizes if s.grams or s.ml), key=lambda s: s.grams or s.ml)
-        out: dict[str, object] = {"smallest size": metric[0].label, "first listed size": product.sizes[0].label}
-        out.update(ignore_cheapest(task, meta["product_id"], meta["size"]))
-        return out
+        # The amount decides the size (test_size_answers_need_the_amount); positions: the suite-level test.
+        return dict(ignore_cheapest(task, meta["product_id"], meta["size"]))
     if kind == "calories":
         first = meta["named_products"][0]
         size = catalog.get_product(meta["product_id"]).sizes[0].label
@@ -70,9 +72,7 @@ def wrong_answers(task: dict) -> dict[str, object]:
                 # Per task, one of the two named products is the answer; across tasks see the balance test.
                 "_first named": first}
     if kind == "nearest":
-        in_stock = stocked(meta["product_id"], meta["size"])
         return {"nearest seller ignoring stock": nearest(task, sellers(meta["product_id"], meta["size"])),
-                "first listed store in stock": in_stock[0],
                 "cheapest store": catalog.cheapest_store(meta["product_id"], meta["size"])}
     if kind == "pair":
         out = {}
@@ -93,6 +93,45 @@ def expected(task: dict, strategy: str) -> object:
             return meta["nearer_store"]
         return meta["stores"][int(strategy.split()[1][0]) - 1]
     return meta["store_id"]
+
+
+def test_size_answers_need_the_amount() -> None:
+    """The smallest size that holds the stated amount: the one below it holds less, and it holds enough."""
+    for task in (t for t in TASKS if t["id"].startswith("shopping-size-")):
+        product, need = catalog.get_product(task["metadata"]["product_id"]), task["metadata"]["need"]["amount"]
+        metric = sorted((s for s in product.sizes if s.grams or s.ml), key=lambda s: s.grams or s.ml)
+        at = [s.label for s in metric].index(task["metadata"]["size"])
+        assert (metric[at].grams or metric[at].ml) >= need, task["id"]
+        assert at == 0 or (metric[at - 1].grams or metric[at - 1].ml) < need, task["id"]
+
+
+def _share(values: list) -> float:
+    from collections import Counter
+
+    return Counter(values).most_common(1)[0][1] / len(values)
+
+
+@pytest.mark.parametrize("family", ["cheapest", "size", "nearest", "pair"])
+def test_no_store_is_the_target_of_most_tasks_and_none_never(family: str) -> None:
+    tasks = [t for t in TASKS if t["id"].startswith(f"shopping-{family}-")]
+    targets = [t["metadata"].get("nearer_store") or t["metadata"]["store_id"] for t in tasks]
+    stores = [s.id for s in catalog.load_stores()]
+    assert set(targets) == set(stores), f"{family}: never a target: {set(stores) - set(targets)}"
+    assert _share(targets) <= 0.35, f"{family}: one store is the target of {_share(targets):.0%} of the tasks"
+    if family != "pair":  # the page's default store is right about as often as a guess
+        first = [t["metadata"]["store_id"] == sellers(t["metadata"]["product_id"], t["metadata"]["size"])[0]
+                 for t in tasks]
+        assert sum(first) / len(first) <= 0.35, f"{family}: the first listed store answers {sum(first)} tasks"
+
+
+def test_no_position_in_the_size_list_answers_most_size_questions() -> None:
+    tasks = [t for t in TASKS if t["id"].startswith("shopping-size-")]
+    positions = []
+    for t in tasks:
+        labels = [s.label for s in catalog.get_product(t["metadata"]["product_id"]).sizes]
+        at = labels.index(t["metadata"]["size"])
+        positions.append("first" if at == 0 else "last" if at == len(labels) - 1 else "middle")
+    assert set(positions) == {"first", "middle", "last"} and _share(positions) <= 0.4, positions
 
 
 def test_every_template_is_covered() -> None:

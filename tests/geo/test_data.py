@@ -101,7 +101,7 @@ def test_every_country_and_city_has_a_wiki_article():
     chattogram = index.find("Chittagong")
     assert chattogram is not None and chattogram.title == "Chattogram"
     assert "CDA Avenue" not in chattogram.body and "031" not in chattogram.body
-    assert "area code of the 03x block" in chattogram.body and "region's name in the local script" in chattogram.body
+    assert "area code of the 03x block" in chattogram.body and "region's name, in the local script" in chattogram.body
     assert index.find("Côte d'Ivoire").title == "Ivory Coast"
 
 

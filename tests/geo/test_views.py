@@ -19,7 +19,7 @@ from ewa_mcp.envs.geo.taskgen.geolocation import build_tasks
 from ewa_mcp.geometry import FOUR_DIRECTIONS
 from ewa_mcp.envs.geo.hardness import is_hard
 from ewa_mcp.envs.geo.languages import language
-from ewa_mcp.envs.geo.styles import TREE_WORDS, VEHICLE_WORDS
+from ewa_mcp.envs.geo.styles import TREE_WORDS, vehicle_look
 from ewa_mcp.envs.geo.graph import build_graph
 from ewa_mcp.envs.geo.locations import LOCATIONS, LOCATIONS_LIST
 from ewa_mcp.envs.geo.view_images import render_png, render_view
@@ -155,7 +155,7 @@ def _deciding_city_cues(loc, spec, text) -> list[str]:
 
 def _transport_shown(spec, text) -> list[str]:
     return [v.kind for v in spec.vehicles if v.kind != "car"
-            and VEHICLE_WORDS[v.kind].format(colour=v.colour_words).split(" {")[0][:12] in text]
+            and vehicle_look(v.kind, v.colour_words) in text]
 
 
 def test_every_baseline_view_carries_what_its_difficulty_promises():

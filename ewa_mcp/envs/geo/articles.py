@@ -27,10 +27,11 @@ from pathlib import Path
 from . import gazetteer
 from .cities import CITIES, City
 from .countries import COUNTRIES, Country
-from .languages import SHOP_KINDS, language
+from .languages import language
 from .locations import LOCATIONS_LIST, Location
 from .plates import colour_name
-from .styles import ARCH, CLIMATE, TREE_WORDS, VEHICLE_WORDS
+from .styles import ARCH, CLIMATE, TREE_NAMES, vehicle_name
+from .vocabulary import banned_in_articles
 
 GROUP = "geo"
 CAPITAL_OVERRIDES = {"KZ": "Astana"}  # the gazetteer still has the 2019-2022 name
@@ -43,7 +44,7 @@ CLIMATE_WORDS = {
     "tropical": "tropical: hot and humid all year, with a rainy season",
     "arid": "desert: hot, dry and dusty",
     "semi_arid": "semi-arid: sunny and dry, with a short rainy season",
-    "highland": "highland: mild days and cool nights at high altitude",
+    "highland": "highland: mild days and cool nights at altitude",
 }
 
 
@@ -89,27 +90,15 @@ def _front_matter(title: str, category: str, aliases: list[str], infobox: dict[s
     return "\n".join(lines)
 
 
-def _words_line(codes: tuple[str, ...]) -> list[str]:
-    out = []
-    for code in codes:
-        lang = language(code)
-        words = []
-        for kind in SHOP_KINDS:
-            native, latin = lang.words[kind]
-            words.append(native if native == latin else f"{native} ({latin})")
-        out.append(f"- Shop signs in {lang.name} ({lang.script} script): " + ", ".join(words) + ".")
-    return out
-
-
 def _plate_line(country: Country, example_region: str | None) -> str:
     style = country.plate
-    parts = [f"Number plates are {colour_name(style.bg)} with {colour_name(style.fg)} characters"]
+    parts = [f"Registration: {colour_name(style.fg)} lettering on {colour_name(style.bg)}"]
     if style.rear_bg:
-        parts[0] += f" (rear plates {colour_name(style.rear_bg)})"
+        parts[0] += f" ({colour_name(style.rear_bg)} at the back)"
     if style.band:
-        parts.append(f"with a blue band on the left marked {style.band}")
+        parts.append(f"the country-identifier field at the start gives the code {style.band}")
     if style.caption:
-        parts.append(f"headed '{style.caption}'")
+        parts.append("the country's name is printed over the registration")
     # The example never carries a real region code or caption: the code of one of the location
     # cities would tie a string seen on a plate to that city.
     shape = None
@@ -117,10 +106,10 @@ def _plate_line(country: Country, example_region: str | None) -> str:
         shape = "".join("@" if c.isalpha() else "#" if c.isdigit() else c for c in example_region)
     example = style.text(random.Random(f"wiki-plate-{country.iso}"), shape)
     if style.region_caption:
-        parts.append("headed with the name of the region where the car is registered")
+        parts.append("the registering region's name is printed over the registration")
     elif style.has_region:
-        parts.append("the first characters name the region where the car is registered")
-    return "- " + ", ".join(parts) + f"; for example '{example}'."
+        parts.append("the leading code identifies the registering region")
+    return "- " + "; ".join(parts) + f"; format example {example}."
 
 
 def local_area_code(city: City) -> str | None:
@@ -165,18 +154,17 @@ def country_article(country: Country, cities: list[City], names: dict[str, str],
     example_region = next((c.plate_region for c in cities if c.plate_region), None)
     capital_ref = f"[[{capital}]]" if _key(capital) in names else capital
     body = [f"**{title}** is a country in {continent}. Its capital is {capital_ref}."]
-    body.append("## Street-level clues")
-    if city_state:  # the article is the city's own: name the languages, quote no sign
-        language_names = [f"{language(c).name} ({language(c).script} script)" for c in country.langs]
-        body.append("- Shop and street signs are written in " + " and ".join(language_names) + ".")
-    else:
-        body += _words_line(country.langs)
-    body.append(f"- Traffic drives on the **{country.drive}**.")
-    body.append(f"- The centre line of two-way streets is {country.centre_line}"
-                + (f"; road edges are marked in {country.edge_line}." if country.edge_line != "white" else "."))
+    body.append("## What a visitor notices")
+    # The languages are named, never listed as the words a shop sign shows: recognising a language
+    # from a sign is the reader's work (issue 26, principle 4).
+    language_names = [f"{language(c).name} ({language(c).script} script)" for c in country.langs]
+    body.append("- Shop and street signs are written in " + " and ".join(language_names) + ".")
+    body.append(f"- Vehicles drive on the **{country.drive}**-hand side.")
+    body.append(f"- Lane markings: {country.centre_line} dividing line"
+                + (f", {country.edge_line} edge lines." if country.edge_line != "white" else "."))
     body.append(_plate_line(country, example_region))
     body.append(f"- Typical city streets: {architecture_words(arch)}.")
-    facts = [without_view_words(fact, banned) for fact in country.facts]
+    facts = [without_view_words(fact, banned | banned_in_articles()) for fact in country.facts]
     body += [f"- {fact}" for fact in facts if fact]
     others = [c for c in cities if _key(c.name) != _key(title)]
     if others:
@@ -279,34 +267,39 @@ def plate_words(city: City) -> str | None:
     if not region or not style.has_region:
         return None
     if style.region_caption:
-        return "Number plates registered here carry the name of their region as a caption above the characters"
+        return "Vehicles registered here carry the region's name printed over the registration"
     if not region.isascii():
-        return "Number plates registered here carry the region's name in the local script beside the characters"
+        return "Vehicles registered here carry the region's name, in the local script, beside the registration"
     length = len(region.replace(" ", "").replace("-", ""))
     size = {1: "one", 2: "two", 3: "three", 4: "four"}.get(length, str(length))
-    return (f"Number plates registered here carry a {size}-character region code ({_char_kinds(region)}) in "
-            f"place of the country's generic characters")
+    return (f"Vehicles registered here carry a {size}-character region code ({_char_kinds(region)}) in "
+            f"place of the country's generic registration prefix")
 
 
-ROOF_WORDS = {"mansard": "mansard roofs", "pitched": "pitched roofs", "flat": "flat roofs", "gabled": "gabled roofs",
-              "curved_tile": "curved tile roofs"}
-MATERIAL_WORDS = {"plaster": "plastered masonry", "brick": "brick", "stone": "stone", "wood": "timber",
-                  "concrete": "concrete", "glass": "steel and glass"}
+# The encyclopedia's names for what the views describe by sight (a test checks that none of these
+# words is one a view uses): "Mansart roofs" where a view sees steep grey roofs with windows in them.
+ROOF_WORDS = {"mansard": "Mansart roofing", "pitched": "sloping roofing", "flat": "walkable roofing",
+              "gabled": "street-facing peaked roofing", "curved_tile": "upturned eaves"}
+MATERIAL_WORDS = {"plaster": "rendered masonry", "brick": "fired-clay masonry", "stone": "ashlar masonry",
+                  "wood": "weatherboarded framing", "concrete": "reinforced-concrete framing",
+                  "glass": "curtain-walled framing"}
 
 
 def architecture_words(arch: Any) -> str:
-    """The city's buildings as an encyclopedia summarises them: material, height, roofs and common features,
-    in words of its own — never the sentence a street view uses, so that sentence cannot be searched for."""
+    """The city's buildings as an encyclopedia summarises them: construction, height, roofing and common
+    features, by name, in words of its own; the views describe the same things by sight, in other words."""
     low, high = arch.floors
-    height = f"{low} storeys" if low == high else f"{low} to {high} storeys"
+    height = f"{low} stories" if low == high else f"{low} to {high} stories"
     features = [word for flag, word in (
-        (arch.balconies, "balconies"), (arch.dormers, "dormer windows"), (arch.chimneys, "chimney stacks"),
-        (arch.fire_escapes, "fire escapes"), (arch.arcade, "ground-floor arcades"), (arch.veranda, "covered verandas"),
-        (arch.shutters, "window shutters"), (arch.water_tanks, "rooftop water tanks"), (arch.ac_units, "air conditioners"),
-        (arch.wires, "overhead cables"), (arch.awnings, "shop awnings"), (arch.soot, "soot-darkened facades"),
-        (arch.corrugated, "corrugated roofing"), (arch.vertical_signs, "vertical signboards")) if flag]
-    text = f"the typical street building is of {MATERIAL_WORDS.get(arch.material, arch.material)}, {height} high, under " \
-           f"{ROOF_WORDS.get(arch.roof, arch.roof + ' roofs')}"
+        (arch.balconies, "loggias"), (arch.dormers, "lucarnes"), (arch.chimneys, "coal-era flues"),
+        (arch.fire_escapes, "external emergency stairways"), (arch.arcade, "porticoes"),
+        (arch.veranda, "covered sidewalks"), (arch.shutters, "louvred persiennes"),
+        (arch.water_tanks, "cisterns"), (arch.ac_units, "wall-mounted coolers"),
+        (arch.wires, "aerial wiring"), (arch.awnings, "shop sunshades"),
+        (arch.soot, "coal-smoke blackening"), (arch.corrugated, "galvanised-iron sheet roofing"),
+        (arch.vertical_signs, "perpendicular signage"), (bool(arch.tiled_colours), "azulejo tilework")) if flag]
+    text = f"the typical street building is of {MATERIAL_WORDS.get(arch.material, arch.material)}, {height}, " \
+           f"with {ROOF_WORDS.get(arch.roof, arch.roof)}"
     if features:
         listed = features[0] if len(features) == 1 else ", ".join(features[:-1]) + " and " + features[-1]
         text += f"; {listed} are common"
@@ -323,11 +316,11 @@ def _city_sections(city: City, locations: list[Location]) -> list[str]:
         body.append("- Shop and street signs are written in " + " and ".join(names) + ".")
     body.append(f"- Architecture: {architecture_words(arch)}.")
     trees = city.trees or climate.trees
-    body.append("- Street trees: " + ", ".join(TREE_WORDS[t] for t in trees) + ".")
+    body.append("- Street trees: " + ", ".join(TREE_NAMES[t] for t in trees) + ".")
     body.append(f"- Climate: {CLIMATE_WORDS[city.climate]}.")
     for feature in city.transport:
         kind, _, colour = feature.partition(":")
-        body.append("- Often seen: " + VEHICLE_WORDS[kind].format(colour=colour) + ".")
+        body.append("- Often seen: " + vehicle_name(kind, colour) + ".")
     phone = area_code_words(city)
     if phone:
         body.append(f"- Local telephone numbers carry {phone}.")
@@ -335,12 +328,12 @@ def _city_sections(city: City, locations: list[Location]) -> list[str]:
     if plate:
         body.append(f"- {plate}.")
     banned = view_words(city, locations)
-    places = [(place, looks) for place, looks in city.places.items()
-              if not (words_of(place) | words_of(looks)) & banned]
+    places = [(place, without_view_words(looks, set(banned_in_articles())))
+              for place, looks in city.places.items() if not (words_of(place) | words_of(looks)) & banned]
     if places:
         body.append("## Landmarks")
         for place, looks in places:
-            body.append(f"- **{place}**: {looks}.")
+            body.append(f"- **{place}**" + (f": {looks}" if looks else "") + ".")
     return body
 
 
@@ -356,7 +349,7 @@ def city_article(city: City, locations: list[Location], aliases: list[str]) -> s
         "Time zone": record["timezone"],
         "Climate": CLIMATE_WORDS[city.climate].split(":")[0].capitalize(),
     }
-    about = without_view_words(city.about, view_words(city, locations))
+    about = without_view_words(city.about, view_words(city, locations) | banned_in_articles())
     body = [f"**{city.name}** is a city in [[{ctitle}]]." + (f" {about}" if about else ""),
             *_city_sections(city, locations)]
     coordinates = {"lat": round(record["latitude"], 4), "lng": round(record["longitude"], 4)}
@@ -414,7 +407,7 @@ def write_articles(out_dir: Path, articles_root: Path | None = None) -> int:
         for city in cities_by_country[iso]:
             banned |= view_words(city, by_city[city.key])
         for city in same:
-            about = without_view_words(city.about, banned)
+            about = without_view_words(city.about, banned | banned_in_articles())
             extra += [*(["## The city", about] if about else []), *_city_sections(city, by_city[city.key])]
         cand = tuple(country.aliases) + tuple(a for c in same for a in c.aliases)
         if iso == "GE":

@@ -8,7 +8,7 @@ It never names a country or city except where quoted from a sign.
 from __future__ import annotations
 
 from .scene import ShopSign, Vehicle, ViewSpec
-from .styles import TREE_WORDS, VEHICLE_WORDS
+from .styles import TREE_WORDS, VEHICLE_WORDS, vehicle_look
 
 # Each kind's sign carries a pictogram at its left end (view_images.shop_pictogram draws it).
 SHOP_KIND_LOOKS = {
@@ -35,10 +35,9 @@ def _shop(sign: ShopSign, where: str) -> str:
 
 
 def _vehicle_phrase(v: Vehicle) -> str:
-    template = VEHICLE_WORDS.get(v.kind)
-    if template is None:
+    if v.kind not in VEHICLE_WORDS:
         return f"a {v.colour_words} car"
-    return template.format(colour=v.colour_words or "")
+    return vehicle_look(v.kind, v.colour_words or "")
 
 
 def _plate_sentence(v: Vehicle) -> str:
@@ -111,13 +110,13 @@ def describe_view_cues(spec: ViewSpec) -> tuple[str, frozenset[str]]:
                      f"in the far lane from your {far.replace(' to ', ' to your ')}.")
         marks = []
         if spec.centre_line:
-            marks.append(f"a dashed {spec.centre_line} centre line")
+            marks.append(f"a broken {spec.centre_line} stripe divides the two directions")
             cues.add(f"centre_line:{spec.centre_line}")
         if spec.edge_line and spec.edge_line != "white":
-            marks.append(f"{spec.edge_line} lines along the road edges")
+            marks.append(f"solid {spec.edge_line} stripes run along both kerbs")
             cues.add(f"edge_line:{spec.edge_line}")
         if marks:
-            s.append("Road markings: " + " and ".join(marks) + ".")
+            s.append("Paint on the road: " + "; ".join(marks) + ".")
 
     plated = [v for v in spec.vehicles if v.plate is not None and v.facing == "away"]
     if plated:
@@ -128,7 +127,7 @@ def describe_view_cues(spec: ViewSpec) -> tuple[str, frozenset[str]]:
         s.append("Also in view: " + "; ".join(_vehicle_phrase(v) for v in specials) + ".")
         cues |= {f"vehicle:{v.kind}" for v in specials}
     if spec.tram_tracks:
-        s.append("Tram tracks run along the street under an overhead wire.")
+        s.append("Rail tracks are set into the road under an overhead wire.")
         cues.add("tram_tracks")
     if spec.skytrain:
         s.append(VEHICLE_WORDS["skytrain"][0].upper() + VEHICLE_WORDS["skytrain"][1:] + ".")

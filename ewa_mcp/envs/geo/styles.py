@@ -158,80 +158,106 @@ class Climate:
 
 
 CLIMATE: dict[str, Climate] = {
-    "oceanic": Climate("#8fa9c4", "#d6dde4", 5, ("plane", "linden", "maple"), "a soft grey-blue sky with many "
-                                                                              "clouds"),
+    "oceanic": Climate("#8fa9c4", "#d6dde4", 5, ("plane", "linden", "maple"), "a soft grey-blue sky with many clouds"),
     "continental": Climate("#6f9fd0", "#cfe0ee", 3, ("linden", "chestnut", "maple"), "a clear blue sky with a few "
                                                                                       "clouds"),
-    "nordic": Climate("#9db3c7", "#e3e8ec", 4, ("birch", "spruce", "linden"), "a pale, low-sun northern sky"),
+    "nordic": Climate("#9db3c7", "#e3e8ec", 4, ("birch", "spruce", "linden"), "a pale sky with the sun low over the roofs"),
     "mediterranean": Climate("#4d8fd6", "#bcd8f0", 1, ("plane", "umbrella_pine", "cypress", "palm"),
                              "a deep blue, almost cloudless sky"),
-    "humid_subtropical": Climate("#7fa8cf", "#dfe6e8", 3, ("plane", "camphor", "palm"), "a hazy, humid sky"),
+    "humid_subtropical": Climate("#7fa8cf", "#dfe6e8", 3, ("plane", "camphor", "palm"), "a milky, hazy sky"),
     "tropical": Climate("#3f8ed8", "#cfe6f5", 4, ("coconut_palm", "banana", "rain_tree", "frangipani"),
                         "a bright blue sky with towering white cumulus clouds"),
-    "arid": Climate("#9bbfd9", "#efe3c8", 0, ("date_palm", "acacia"), "a pale, dusty sky over sand-coloured haze",
+    "arid": Climate("#9bbfd9", "#efe3c8", 0, ("date_palm", "acacia"), "a pale sky washed out by a sand-coloured haze",
                     ground_tint="#8a8476"),
     "semi_arid": Climate("#78a9d6", "#e8e0cc", 1, ("acacia", "jacaranda", "eucalyptus", "pepper_tree"),
-                         "a dry, bright blue sky"),
-    "highland": Climate("#4f86c6", "#d4e2ee", 2, ("eucalyptus", "pine", "jacaranda"), "a thin, intensely blue "
-                                                                                      "high-altitude sky with "
-                                                                                      "mountains on the horizon"),
+                         "a bright, hard blue sky"),
+    "highland": Climate("#4f86c6", "#d4e2ee", 2, ("eucalyptus", "pine", "jacaranda"),
+                          "a thin, intensely blue sky with mountains on the horizon"),
 }
 
+# What a passer-by sees of each kind of tree (the views): shape, bark, leaves, flowers, never the
+# species' name, which is how the wiki files it (TREE_NAMES); the agent connects the two.
 TREE_WORDS: dict[str, str] = {
-    "plane": "broad plane trees with mottled bark",
-    "linden": "rounded linden trees",
-    "maple": "leafy maples",
-    "chestnut": "horse chestnut trees",
-    "birch": "white-barked birches",
-    "spruce": "dark conical spruces",
-    "umbrella_pine": "umbrella pines with flat, spreading crowns",
-    "cypress": "tall narrow cypresses",
-    "palm": "palm trees",
-    "fan_palm": "very tall thin fan palms",
-    "camphor": "dense evergreen camphor trees",
-    "coconut_palm": "leaning coconut palms",
-    "banana": "banana plants with huge leaves",
-    "rain_tree": "wide-spreading rain trees",
-    "frangipani": "frangipani trees with white flowers",
-    "date_palm": "straight-trunked date palms",
-    "acacia": "flat-topped acacias",
-    "jacaranda": "jacaranda trees in purple bloom",
-    "eucalyptus": "tall eucalyptus trees with peeling bark",
-    "pepper_tree": "weeping pepper trees",
-    "pine": "pines",
-    "ginkgo": "ginkgo trees with fan-shaped leaves",
-    "zelkova": "zelkova trees",
-    "willow": "weeping willows",
-    "locust": "pagoda trees",
-    "banyan": "banyan trees with hanging aerial roots",
-    "orange": "orange trees heavy with fruit",
-    "olive": "silvery olive trees",
-    "fig": "huge fig trees",
-    "araucaria": "tall candelabra-shaped araucaria pines",
-    "flamboyant": "flame trees with red blossoms",
+    "plane": "broad trees whose bark flakes off in grey, olive and cream patches",
+    "linden": "rounded trees with heart-shaped leaves",
+    "maple": "leafy trees with five-pointed leaves",
+    "chestnut": "big trees with hand-shaped leaves and upright white flower spikes",
+    "birch": "slender trees with white, black-streaked bark",
+    "spruce": "dark conical evergreens",
+    "umbrella_pine": "tall needle trees with bare trunks and flat, spreading crowns",
+    "cypress": "tall narrow dark-green columns of foliage",
+    "palm": "trees with a single bare trunk topped by a tuft of fronds",
+    "fan_palm": "very tall thin trunks topped by small tufts of fan-shaped fronds",
+    "camphor": "dense glossy evergreen trees",
+    "coconut_palm": "leaning trunks topped by long feathery fronds and clusters of green nuts",
+    "banana": "soft-stemmed plants with huge paddle-shaped leaves",
+    "rain_tree": "wide umbrella-shaped trees with feathery leaves",
+    "frangipani": "stubby-branched small trees with waxy white flowers",
+    "date_palm": "straight ridged trunks topped by stiff grey-green fronds",
+    "acacia": "thorny trees with flat tops",
+    "jacaranda": "trees covered in purple blossom",
+    "eucalyptus": "tall pale-trunked trees with bark hanging in strips",
+    "pepper_tree": "trees with long drooping feathery branches and pink berries",
+    "pine": "needle-leaved evergreens",
+    "ginkgo": "trees with small fan-shaped leaves",
+    "zelkova": "vase-shaped trees with small saw-edged leaves",
+    "willow": "trees whose long thin branches hang down to the ground",
+    "locust": "trees with small paired leaflets and creamy flower clusters",
+    "banyan": "massive trees with roots hanging from the branches",
+    "orange": "small round-crowned trees hung with orange fruit",
+    "olive": "gnarled trees with small silvery leaves",
+    "fig": "huge trees with glossy leathery leaves and buttressed trunks",
+    "araucaria": "tall conifers with branches in level tiers like a candelabra",
+    "flamboyant": "spreading trees covered in scarlet blossom",
 }
 
-# How each kind of city vehicle looks; colour comes from the "kind:colour" feature.
+# The species as the wiki names them (no word shared with TREE_WORDS; a test checks).
+TREE_NAMES: dict[str, str] = {
+    "plane": "London plane (Platanus)", "linden": "lime (Tilia)", "maple": "maple (Acer)",
+    "chestnut": "horse chestnut (Aesculus)", "birch": "birch (Betula)", "spruce": "spruce (Picea)",
+    "umbrella_pine": "Pinus pinea", "cypress": "Italian cypress (Cupressus)",
+    "palm": "Phoenix canariensis", "fan_palm": "Washingtonia robusta", "camphor": "camphor laurel (Cinnamomum)",
+    "coconut_palm": "coconut (Cocos nucifera)", "banana": "banana (Musa)", "rain_tree": "rain tree (Samanea)",
+    "frangipani": "frangipani (Plumeria)", "date_palm": "date (Phoenix dactylifera)", "acacia": "acacia (Vachellia)",
+    "jacaranda": "jacaranda", "eucalyptus": "eucalyptus (gum)", "pepper_tree": "Peruvian pepper (Schinus)",
+    "pine": "pine (Pinus)", "ginkgo": "ginkgo", "zelkova": "zelkova (keyaki)", "willow": "weeping willow (Salix)",
+    "locust": "Japanese pagoda (Styphnolobium)", "banyan": "banyan (Ficus benghalensis)",
+    "orange": "bitter citrus (Citrus aurantium)", "olive": "Olea europaea", "fig": "Ficus macrophylla",
+    "araucaria": "Paraná pine (Araucaria)", "flamboyant": "flamboyant (Delonix)",
+}
+
+# How each kind of city vehicle looks; colour comes from the "kind:colour" feature. Plain visual
+# words: the vehicle's local name is the wiki's (VEHICLE_NAMES).
 VEHICLE_WORDS: dict[str, str] = {
-    "tram": "a {colour} tram on rails",
-    "double_decker": "a {colour} double-decker bus",
-    "taxi": "a {colour} taxi",
-    "minibus": "a {colour} minibus taxi crowded with passengers",
-    "matatu": "a brightly painted minibus covered in graffiti-style art",
-    "tuk_tuk": "a three-wheeled motor rickshaw (tuk-tuk)",
-    "auto_rickshaw": "a {colour} three-wheeled auto-rickshaw",
-    "cycle_rickshaw": "a pedal cycle rickshaw with a decorated hood",
-    "becak": "a pedal rickshaw with the passenger seat in front",
-    "motorbikes": "dozens of motor scooters",
-    "boda_boda": "a swarm of motorbike taxis",
-    "jeepney": "a long, chrome-decorated, brightly painted jeep-like minibus",
-    "songthaew": "a {colour} pick-up truck with benches in the back serving as a shared taxi",
+    "tram": "a {colour} electric rail car running on tracks in the road",
+    "double_decker": "a {colour} bus with two passenger decks",
+    "taxi": "a {colour} car with a lit sign on its roof, picking up passengers",
+    "minibus": "a {colour} van-sized bus crowded with passengers",
+    "matatu": "a van-sized bus painted all over in graffiti-style art, with loud music",
+    "tuk_tuk": "a small three-wheeled motor cab with an open passenger bench",
+    "auto_rickshaw": "a {colour} three-wheeled motor cab with a canvas top",
+    "cycle_rickshaw": "a pedalled three-wheeler carrying passengers under a decorated hood",
+    "becak": "a pedalled three-wheeler with the passenger seat in front of the rider",
+    "motorbikes": "dozens of motor scooters filling the road",
+    "boda_boda": "a swarm of motorcycles carrying paying passengers on the back",
+    "jeepney": "a long, chrome-decorated, brightly painted passenger vehicle built like a stretched jeep",
+    "songthaew": "a {colour} pick-up truck with benches in the back, carrying passengers",
     "classic_car": "a 1950s car with tail fins and chrome, in bright paint",
     "chicken_bus": "a brightly repainted old school bus",
     "painted_bus": "a bus covered with ornate painted decorations and chrome",
-    "trolleybus": "a {colour} trolleybus under overhead wires",
+    "trolleybus": "a {colour} bus drawing power from two overhead wires",
     "skytrain": "an elevated railway viaduct on concrete pillars above the road",
-    "bicycles": "many people riding upright bicycles on a red cycle path",
+    "bicycles": "many people riding upright bicycles on a red-paved lane beside the road",
+}
+
+# The vehicles as the wiki names them (no word shared with VEHICLE_WORDS; a test checks).
+VEHICLE_NAMES: dict[str, str] = {
+    "tram": "trams (streetcars)", "double_decker": "bilevel buses", "taxi": "{colour} taxicabs",
+    "minibus": "share-minibuses", "matatu": "matatus", "tuk_tuk": "tuk-tuks", "auto_rickshaw": "auto-rickshaws",
+    "cycle_rickshaw": "cycle rickshaws", "becak": "becaks", "motorbikes": "mopeds",
+    "boda_boda": "boda-bodas", "jeepney": "jeepneys", "songthaew": "songthaews",
+    "classic_car": "vintage American automobiles", "chicken_bus": "chicken buses", "painted_bus": "phool-patti buses",
+    "trolleybus": "trolleybuses", "skytrain": "an overground rapid-transit line (skytrain)", "bicycles": "cycling infrastructure",
 }
 
 COLOUR_HEX: dict[str, str] = {
@@ -239,6 +265,30 @@ COLOUR_HEX: dict[str, str] = {
     "black": "#222222", "orange": "#ef7d1a", "pink": "#e36a9c", "beige": "#d9c8a0", "silver": "#b8bcc0",
     "grey": "#8a8f96",
 }
+
+
+def is_colour(words: str) -> bool:
+    """Whether a transport feature's second part is a colour ("minibus:trotro" names the vehicle instead)."""
+    return any(word in COLOUR_HEX for word in words.replace("-", " ").split())
+
+
+def vehicle_look(kind: str, colour: str) -> str:
+    """The view's words for a vehicle: its colours only; a local name given with or in place of a colour
+    ("black cab", "trotro") is the wiki's word, never said."""
+    seen = " ".join(w for w in colour.split() if w == "and" or all(p in COLOUR_HEX or p == "cream"
+                                                                    for p in w.split("-")))
+    seen = seen if is_colour(seen) else ""
+    text = " ".join(VEHICLE_WORDS[kind].format(colour=seen).split())
+    return "an " + text[2:] if text.startswith("a ") and text[2:3] and text[2:3] in "aeiou" else text
+
+
+def vehicle_name(kind: str, colour: str) -> str:
+    """The wiki's words for a vehicle: its name, with the colour or the local name the city uses."""
+    if is_colour(colour) and "{colour}" not in VEHICLE_NAMES[kind]:
+        return f"{colour} {VEHICLE_NAMES[kind]}"
+    if is_colour(colour) or not colour:
+        return " ".join(VEHICLE_NAMES[kind].format(colour=colour).split())
+    return " ".join(VEHICLE_NAMES[kind].format(colour="").split()) + f" (locally: {colour})"
 
 
 def colour_hex(words: str) -> str:

@@ -53,6 +53,26 @@ def slots(out: list[Task]) -> Any:
         yield len(out)
 
 
+def balanced(draw: Any, key: Any, counts: dict[str, int], tries: int = 400) -> Any:
+    """Draw candidates (``draw()`` returns one or None) until one whose ``key`` is among the least used so far
+    (``counts``, every possible key present); after ``tries`` draws, the least used one seen. Targets spread
+    over every store (issue 26: no store the target of most tasks, none never), deterministically."""
+    best, best_count = None, None
+    for _ in range(tries):
+        cand = draw()
+        if cand is None:
+            continue
+        k = key(cand)
+        if counts[k] == min(counts.values()):
+            best = cand
+            break
+        if best_count is None or counts[k] < best_count:
+            best, best_count = cand, counts[k]
+    if best is not None:
+        counts[key(best)] += 1
+    return best
+
+
 class Context:
     def __init__(self) -> None:
         self.world = get_world()
@@ -73,6 +93,10 @@ class Context:
         self.starts = starts
         self._walks: dict[tuple[Any, str], Any] = {}
 
+    def store_counts(self) -> dict[str, int]:
+        """A zero count per store (``balanced`` spreads task targets over them)."""
+        return {sid: 0 for sid in self.stores}
+
     def walk(self, start: Any, store_id: str) -> Any:
         key = (start.node, store_id)
         if key not in self._walks:
@@ -87,9 +111,11 @@ class Context:
         return ranked[0] if ranked else None
 
     def cheapest_is_decisive(self, start: Any, product: Any, size: str, store_id: str) -> bool:
-        """Ignoring "cheapest" must fail: the cheapest store is neither the nearest seller nor the first listed."""
-        return (store_id != first_listed_store(product, size)
-                and self.nearest(start, seller_ids(product, size)) not in (None, store_id))
+        """Ignoring "cheapest" must fail for the walk: the cheapest store is not the nearest seller. The first
+        listed store is not excluded: the product page lists every store in one fixed order, so excluding it
+        would make one store never a target; balancing the targets (``balanced``) leaves any one store,
+        the first listed included, right for about a quarter of the tasks."""
+        return self.nearest(start, seller_ids(product, size)) not in (None, store_id)
 
 
 def _task(ctx: Context, tid: str, intent: str, start: Any, product: Any, size: str, store_id: str,
@@ -172,13 +198,22 @@ def size_answer(product: Any, label: str, context: list[str]) -> TextAnswer:
 def cheapest_tasks(ctx: Context) -> list[Task]:
     out: list[Task] = []
     rng = rng_for("shopping", "cheapest")
-    for n in slots(out):
+    counts = ctx.store_counts()
+
+    def draw() -> Any:
         product = rng.choice(ctx.products)
         size = rng.choice(product.sizes).label
         store_id = catalog.cheapest_store(product.id, size)
         start = rng.choice(ctx.starts)
         if not in_stock(product, size, store_id) or not ctx.cheapest_is_decisive(start, product, size, store_id):
+            return None
+        return product, size, store_id, start
+
+    for n in slots(out):
+        picked = balanced(draw, lambda c: c[2], counts)
+        if picked is None:
             continue
+        product, size, store_id, start = picked
         walk_first = n % 4 == 3
         intent = (f"Buy me {product.name} ({size}) for pickup at the store that sells it cheapest, "
                   f"then walk there from {start.name} to pick it up. {WALK_RULE}") if not walk_first else (
@@ -204,25 +239,45 @@ def size_tasks(ctx: Context) -> list[Task]:
     out: list[Task] = []
     rng = rng_for("shopping", "size")
     candidates = [p for p in ctx.products if len([s for s in p.sizes if s.grams or s.ml]) >= 2]
-    for n in slots(out):
-        product = rng.choice(candidates)
+    counts = ctx.store_counts()
+    position = ["first"]
+
+    def draw() -> Any:
+        # The answer's place in the size list rotates (first, last, a middle one where a product has three
+        # sizes), so neither "the first listed" nor "the last listed" size answers most questions.
+        where = position[0]
+        pool = [p for p in candidates if len([s for s in p.sizes if s.grams or s.ml]) >= 3] if where == "middle" \
+            else candidates
+        product = rng.choice(pool)
         sizes = sorted([s for s in product.sizes if s.grams or s.ml], key=_amount)
-        target = sizes[rng.randrange(1, len(sizes))]
-        below = sizes[sizes.index(target) - 1]
-        amount = _amount(below) + max(1, (_amount(target) - _amount(below)) // 2)
-        unit = "g" if target.grams else "ml"
+        index = 0 if where == "first" else len(sizes) - 1 if where == "last" else rng.randrange(1, len(sizes) - 1)
+        target = sizes[index]
+        if index == 0:  # the smallest is enough: ask for a little less than it holds
+            amount = max(1, int(_amount(target) * rng.uniform(0.5, 0.9)))
+        else:
+            below = sizes[index - 1]
+            amount = _amount(below) + max(1, (_amount(target) - _amount(below)) // 2)
         store_id = catalog.cheapest_store(product.id, target.label)
         start = rng.choice(ctx.starts)
-        # Each stated constraint decides: the size that is enough is not the first listed one (the smallest is
-        # never enough), and its cheapest store is neither the nearest seller nor the first listed.
-        if (not in_stock(product, target.label, store_id) or target.label == product.sizes[0].label
-                or not ctx.cheapest_is_decisive(start, product, target.label, store_id)):
+        # The cheapest store decides the walk: it is not the nearest seller.
+        if not in_stock(product, target.label, store_id) or not ctx.cheapest_is_decisive(
+                start, product, target.label, store_id):
+            return None
+        return product, target, amount, store_id, start
+
+    for n in slots(out):
+        position[0] = ("first", "last", "middle")[n % 3]
+        picked = balanced(draw, lambda c: c[3], counts)
+        if picked is None:
             continue
+        product, target, amount, store_id, start = picked
+        unit = "g" if target.grams else "ml"
         intent = (f"What size of {product.name} should I buy if I need at least {amount} {unit}? Buy the smallest "
                   f"size that is enough, at the store where that size is cheapest, then walk there from "
                   f"{start.name}. {WALK_RULE} Tell me the size. "
                   + answer_rule("Answer with the size as the shop labels it."))
         if any(t.intent == intent for t in out):
+            counts[store_id] -= 1
             continue  # the same question twice
         task = _task(ctx, f"shopping-size-{n:03d}", intent, start, product, target.label, store_id, rng,
                      answer=size_answer(product, target.label, [f"{amount} {unit}"]))
@@ -234,6 +289,7 @@ def size_tasks(ctx: Context) -> list[Task]:
 def calorie_tasks(ctx: Context) -> list[Task]:
     out: list[Task] = []
     rng = rng_for("shopping", "calories")
+    counts = ctx.store_counts()
     foods = [p for p in ctx.products if p.nutrition is not None]
     for n in slots(out):
         low, high = rng.sample(foods, 2)
@@ -253,7 +309,7 @@ def calorie_tasks(ctx: Context) -> list[Task]:
         stocked = [sid for sid in sellers if in_stock(low, size, sid) and sid not in ignored]
         if not stocked or None in ignored:
             continue
-        store_id = rng.choice(stocked)
+        store_id = min(rng.sample(stocked, len(stocked)), key=lambda sid: counts[sid])  # the least used so far
         intent = (f"How many calories are in {a.name} and {b.name} per serving? I need to select the lower one: "
                   f"order it, in the first size the shop lists for it, for pickup at {ctx.stores[store_id].name}, "
                   f"walk there from {start.name}, and tell me its calories per serving. {WALK_RULE} "
@@ -263,10 +319,16 @@ def calorie_tasks(ctx: Context) -> list[Task]:
                                  numbers=CALORIES)
         if any(t.intent == intent for t in out):
             continue  # the same question twice
+        counts[store_id] += 1
         task = _task(ctx, f"shopping-calories-{n:03d}", intent, start, low, size, store_id, rng, answer=check)
         task.metadata["named_products"] = [a.id, b.id]
         out.append(task)
     return out
+
+
+# The released suite has 51 "nearest" tasks (the pool was exhausted when the first listed store was excluded);
+# task ids are kept, so the family keeps that size now that the pool is larger.
+NEAREST_TASKS = 51
 
 
 def nearest_tasks(ctx: Context) -> list[Task]:
@@ -275,21 +337,33 @@ def nearest_tasks(ctx: Context) -> list[Task]:
     sold_out = [(p, o.size) for p in ctx.products for o in p.offers if o.stock == 0
                 and any(q.size == o.size and q.stock > 0 for q in p.offers)]
     seen: set[tuple[str, str, str]] = set()
-    for n in slots(out):
+    counts = ctx.store_counts()
+
+    def draw() -> Any:
         # "that has it in stock" must decide: the nearest store selling this size has none on the shelf.
         product, size = rng.choice(sold_out)
         start = rng.choice(ctx.starts)
         if (product.id, size, start.id) in seen:
-            continue  # few product sizes are sold out somewhere: do not ask the same thing twice
-        seen.add((product.id, size, start.id))
+            return None  # few product sizes are sold out somewhere: do not ask the same thing twice
         sellers = seller_ids(product, size)
         stocked = [sid for sid in sellers if in_stock(product, size, sid)]
         nearest_seller, store_id = ctx.nearest(start, sellers), ctx.nearest(start, stocked)
         if nearest_seller is None or store_id is None or in_stock(product, size, nearest_seller):
-            continue  # too close to call, or the nearest seller has stock
-        # "closest to me" must decide too: the answer is not the first listed or the cheapest store in stock.
-        if store_id in (first_listed_store(product, size, stocked_only=True), catalog.cheapest_store(product.id, size)):
+            return None  # too close to call, or the nearest seller has stock
+        # "closest to me" must decide too: the answer is not the cheapest store in stock. (The first listed
+        # store is not excluded: targets are balanced over the stores instead, see ``balanced``.)
+        if store_id == catalog.cheapest_store(product.id, size):
+            return None
+        return product, size, start, store_id
+
+    for n in slots(out):
+        if len(out) >= NEAREST_TASKS:
+            break
+        picked = balanced(draw, lambda c: c[3], counts)
+        if picked is None:
             continue
+        product, size, start, store_id = picked
+        seen.add((product.id, size, start.id))
         intent = (f"I am at {start.name}. Buy me {product.name} ({size}) for pickup at the store closest to me "
                   f"on foot that has it in stock, then walk there. {WALK_RULE}")
         out.append(_task(ctx, f"shopping-nearest-{n:03d}", intent, start, product, size, store_id, rng))
@@ -301,23 +375,34 @@ def pair_tasks(ctx: Context) -> list[Task]:
     rounds of product page, cart and checkout), then a walk to whichever of the two stores is nearer."""
     out: list[Task] = []
     rng = rng_for("shopping", "pair")
-    for n in slots(out):
+    counts = ctx.store_counts()
+    parity = [0]
+
+    def draw() -> Any:
         a, b = rng.sample(ctx.products, 2)
         size_a, size_b = rng.choice(a.sizes).label, rng.choice(b.sizes).label
         store_a, store_b = catalog.cheapest_store(a.id, size_a), catalog.cheapest_store(b.id, size_b)
         if store_a == store_b or not in_stock(a, size_a, store_a) or not in_stock(b, size_b, store_b):
-            continue
+            return None
         start = rng.choice(ctx.starts)
         if not (ctx.cheapest_is_decisive(start, a, size_a, store_a) and ctx.cheapest_is_decisive(start, b, size_b, store_b)):
-            continue
-        walks = {sid: ctx.walk(start, sid) for sid in (store_a, store_b)}
+            return None
         near = ctx.nearest(start, [store_a, store_b])
         if near is None:
-            continue  # too close to call: which store is nearer must be unambiguous
+            return None  # too close to call: which store is nearer must be unambiguous
         # "nearer" decides: the walk ends at the first product's store in half the tasks, the second's in the
         # other half; and "of those two" decides: the nearer of the two is not the nearest store of all.
-        if near != (store_a if n % 2 == 0 else store_b) or ctx.nearest(start, list(ctx.stores)) in (None, near):
+        if near != (store_a if parity[0] == 0 else store_b) or ctx.nearest(start, list(ctx.stores)) in (None, near):
+            return None
+        return a, b, size_a, size_b, store_a, store_b, start, near
+
+    for n in slots(out):
+        parity[0] = n % 2
+        picked = balanced(draw, lambda c: c[7], counts)  # the walk's end spreads over the stores
+        if picked is None:
             continue
+        a, b, size_a, size_b, store_a, store_b, start, near = picked
+        walks = {sid: ctx.walk(start, sid) for sid in (store_a, store_b)}
         route, place = walks[near], ctx.store_places[near]
         node = ctx.world.node(place.node)
         intent = (f"Buy me {a.name} ({size_a}) and {b.name} ({size_b}), each for pickup at the store that sells "
