@@ -1,7 +1,11 @@
 """What an agent reads, in characters and tokens: the oracle replayed over a sample of every domain through bound
 episodes (ewa_mcp/bound.py, the tools and results an MCP agent gets), in-process.
 
-    .venv/bin/python benchmarks/bench_tokens.py [--sample 3] [--options '{"web_incremental": true}'] [--full-catalogue]
+    .venv/bin/python benchmarks/bench_tokens.py [--sample 3] [--options '{"web_incremental": true}']
+                                                [--descriptions full]
+
+``--descriptions full --options '{"structured": "full"}'`` is what a bound agent read before issue 29 (the
+"before" figures of docs/performance.md).
 
 Prints JSON, per domain: the tool definitions the episode's agent sees (name, description and input schema, as a
 client sends them to a model), each observation kind (the result of each tool, ``start`` being the episode's first
@@ -73,8 +77,9 @@ def stats(values: list[int]) -> dict[str, float]:
     return {"median": round(statistics.median(values), 1), "max": max(values), "n": len(values)} if values else {}
 
 
-async def play(full: Any, task: Task, options: dict[str, Any], count: Any, out: dict[str, Any]) -> None:
-    bound = BoundServer(full, task_id=task.id, options=options)
+async def play(full: Any, task: Task, options: dict[str, Any], count: Any, out: dict[str, Any],
+               descriptions: Any = "concise") -> None:
+    bound = BoundServer(full, task_id=task.id, options=options, descriptions=descriptions)
     start = await bound.start()
     tools = tool_definitions(await bound.list_tools())
     out["tool_chars"].append(len(tools))
@@ -105,7 +110,7 @@ async def play(full: Any, task: Task, options: dict[str, Any], count: Any, out: 
         k["structured_chars"].append(len(structured))
         k["structured_tokens"].append(count(structured))
         if structured and len(structured) > len(text):
-            out["structured_larger"].append(f"{task.id}:{kind}")
+            out["structured_larger"].append(kind)
         if kind.startswith("browser_") or (kind == "start" and "\nURL: " in f"\n{text}"):
             out["web_tokens"].append(count(text))
     joined = "\n".join(episode_text)
@@ -126,7 +131,7 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
     run_dir = Path(tempfile.mkdtemp(prefix="ewa-tokens-"))
     full, episodes = build_server(ServerConfig(run_dir=run_dir))
     report: dict[str, Any] = {"benchmark": "tokens an agent reads (oracle, bound episodes)", "tokenizer": name,
-                              "options": options, "domains": {}}
+                              "options": options, "descriptions": args.descriptions, "domains": {}}
     try:
         catalogue = tool_definitions([t for t in await full.list_tools()])
         report["full_catalogue"] = {"tools": len(await full.list_tools()), "chars": len(catalogue),
@@ -134,7 +139,7 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
         for domain, tasks in sample(store, args.sample).items():
             out = new_domain()
             for task in tasks:
-                await play(full, task, options, count, out)
+                await play(full, task, options, count, out, args.descriptions)
             report["domains"][domain] = {
                 "tasks": [t.id for t in tasks],
                 "tool_definitions": {"tools": max(out["tool_count"]), "chars": max(out["tool_chars"]),
@@ -142,7 +147,8 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
                 "observations": {kind: {m: stats(v) for m, v in k.items()} for kind, k in sorted(out["kinds"].items())},
                 "web_observation_tokens": stats(out["web_tokens"]),
                 "per_episode": {"chars": stats(out["episode_chars"]), "tokens": stats(out["episode_tokens"])},
-                "structured_larger_than_text": len(out["structured_larger"]),
+                "structured_larger_than_text": {k: out["structured_larger"].count(k)
+                                                for k in sorted(set(out["structured_larger"]))},
             }
     finally:
         await episodes.aclose()
@@ -154,6 +160,8 @@ def main() -> None:
     p = argparse.ArgumentParser()
     p.add_argument("--sample", type=int, default=3, help="tasks per domain")
     p.add_argument("--options", default=None, help="start_episode options as JSON, e.g. '{\"web_incremental\": true}'")
+    p.add_argument("--descriptions", choices=["concise", "full"], default="concise",
+                   help="the bound server's tool descriptions")
     args = p.parse_args()
     print(json.dumps(asyncio.run(run(args)), indent=1))
 
