@@ -19,7 +19,7 @@ import copy
 import json
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
-from typing import Any
+from typing import Any, Literal
 
 from mcp.server.mcpserver import MCPServer
 from mcp.server.mcpserver.exceptions import ToolError
@@ -58,6 +58,77 @@ def unbind_schema(schema: dict[str, Any]) -> dict[str, Any]:
     return out
 
 
+# Schema keys a model does not need to call a tool right: the server validates every call against the full
+# schema anyway (lengths, extra properties), and the titles repeat the names.
+_VERBOSE_KEYS = frozenset({"title", "maxLength", "minLength", "maximum", "minimum", "additionalProperties", "default"})
+
+
+def _cut(text: str, clause: bool) -> str:
+    """``text`` up to its first sentence end (". " before a capital) or, with ``clause``, its first ", " or "; ",
+    outside brackets and quotes and never after "e.g."."""
+    depth, quoted = 0, False
+    for i, ch in enumerate(text):
+        if ch == '"':
+            quoted = not quoted
+        elif ch in "([":
+            depth += 1
+        elif ch in ")]":
+            depth = max(0, depth - 1)
+        elif depth or quoted or text[i + 1:i + 2] != " " or text[max(0, i - 3):i + 1] == "e.g.":
+            continue
+        elif ch == "." and (text[i + 2:i + 3].isupper() or clause):
+            return text[:i + 1]
+        elif ch in ";," and clause or ch == ";":
+            return text[:i] + ("" if clause else ".")
+    return text
+
+
+def first_sentence(text: str) -> str:
+    """The first sentence of a tool's description."""
+    return _cut(" ".join(text.split()), clause=False)
+
+
+def concise_schema(schema: Any) -> Any:
+    """An input schema in fewer tokens and the same meaning to a model: no titles or length limits, an optional
+    ``X | None`` shown as ``X`` (leaving it out is how a model passes None), property descriptions cut to their
+    first clause."""
+    if isinstance(schema, list):
+        return [concise_schema(s) for s in schema]
+    if not isinstance(schema, dict):
+        return schema
+    options = schema.get("anyOf")
+    if isinstance(options, list) and schema.get("default", "") is None:
+        kept = [o for o in options if o != {"type": "null"}]
+        if len(kept) == 1:
+            merged = {**{k: v for k, v in schema.items() if k not in ("anyOf", "default")}, **kept[0]}
+            return concise_schema(merged)
+    out: dict[str, Any] = {}
+    for key, value in schema.items():
+        if key in _VERBOSE_KEYS:
+            continue
+        if key == "description" and isinstance(value, str):
+            out[key] = _cut(" ".join(value.split()), clause=True)
+        elif key == "required" and value == []:
+            continue
+        elif key == "properties" and isinstance(value, dict):
+            out[key] = {name: concise_schema(prop) for name, prop in value.items()}
+        else:
+            out[key] = concise_schema(value)
+    return out
+
+
+def describe_once(schema: dict[str, Any], described: set[str]) -> dict[str, Any]:
+    """A parameter described in the same words in several tools (kitchen ``object``, browser ``element``) keeps its
+    description in the first tool listed only: a model reads the definitions together."""
+    for prop in (schema.get("properties") or {}).values():
+        text = prop.get("description") if isinstance(prop, dict) else None
+        if isinstance(text, str):
+            if text in described:
+                del prop["description"]
+            described.add(text)
+    return schema
+
+
 def scrub_text(text: str, episode_id: str) -> str:
     """The text of a result as a bound agent reads it: no episode id (response.footer, finish_episode)."""
     text = text.replace(f"[{episode_id} · ", "[")
@@ -79,14 +150,21 @@ class BoundServer(MCPServer):
     the server's lifespan when ``task_id`` is given (``ewa-mcp serve --bind-task``)."""
 
     def __init__(self, full: Any, *, episode_id: str | None = None, task_id: str | None = None,
-                 options: dict[str, Any] | None = None, own_services: bool = False):
+                 options: dict[str, Any] | None = None, own_services: bool = False,
+                 descriptions: Literal["concise", "full"] = "concise"):
         if (episode_id is None) == (task_id is None):
             raise BindError("bind either a running episode (episode_id) or a task to start (task_id), not both")
         self.full = full
         self.episodes: EpisodeManager = full.episodes
         self.episode_id = episode_id
         self.task_id = task_id
-        self.options = dict(options or {})
+        # The agent plane answers an agent: structured content carries the step's status, not a second copy of
+        # the observation the text already shows (``{"structured": "full"}`` asks for it, as the control plane
+        # gives it by default).
+        self.options = {"structured": "compact", **(options or {})}
+        if descriptions not in ("concise", "full"):
+            raise BindError(f"descriptions must be 'concise' or 'full', not {descriptions!r}")
+        self.descriptions = descriptions
         self.start_text: str | None = None
         self._own_services = own_services
         super().__init__("ewa-mcp (bound episode)", instructions=BOUND_INSTRUCTIONS, version=__version__,
@@ -135,10 +213,18 @@ class BoundServer(MCPServer):
     async def list_tools(self) -> list[MCPTool]:
         tools = await self.full.list_tools()
         out = []
+        described: set[str] = set()
         for tool in tools:
             if tool.name in CONTROL_TOOLS or self._foreign(tool.name):
                 continue
-            out.append(tool.model_copy(update={"input_schema": unbind_schema(tool.input_schema)}))
+            schema = unbind_schema(tool.input_schema)
+            if self.descriptions == "concise":
+                # A model reads every definition on every request: the first sentence of each description and a
+                # lean schema (the full catalogue, with full descriptions, stays on the control-plane server).
+                out.append(tool.model_copy(update={"input_schema": describe_once(concise_schema(schema), described),
+                                                   "description": first_sentence(tool.description or "")}))
+            else:
+                out.append(tool.model_copy(update={"input_schema": schema}))
         return out
 
     def _tool_input_schema(self, name: str) -> dict[str, Any] | None:

@@ -12,7 +12,10 @@ the tasks ``ewa_mcp/cooking``, ``ewa_mcp/navigation``, ``ewa_mcp/shopping``, ``e
   ``episode_id`` bound by the harness (removed from the schemas the model sees, as in evaluation/llm.py).
   ``observation=vision|both`` sends the observation images to the model.
 - Scorer: the project's grader (``ewa_mcp.graders.grade_episode``) on the episode's record; the metrics are
-  Overall, Completion, Web-only and Embodied-only success, and the geolocation levels.
+  Overall success with its standard error, Completion, Overall per domain and per difficulty (with standard
+  errors), and, where some sample has them, Web-only and Embodied-only success and the geolocation levels.
+- The dataset takes tasks in turns across domains (``--limit 5`` on the suite plays every domain); each task's
+  ``version`` is the package's.
 """
 
 from __future__ import annotations
@@ -36,6 +39,7 @@ from inspect_ai.solver import Generate, TaskState, solver
 from inspect_ai.tool import ToolDef, mcp_server_http, mcp_tools
 from mcp import Client
 
+from . import __version__
 from .core import registry
 from .evaluation.llm import HIDDEN_TOOLS, NUDGE, SYSTEM_PROMPT
 from .evaluation.playing import free_port
@@ -70,10 +74,21 @@ def ewa_dataset(domains: list[str] | None = None, difficulty: str | None = None,
     return MemoryDataset(
         [Sample(id=t.id, input=t.intent,
                 metadata={"domain": t.domain, "step_limit": t.step_limit,
-                          "difficulty": getattr(t, "difficulty", None) or t.metadata.get("difficulty")})
-         for t in chosen],
+                          "difficulty": getattr(t, "difficulty", None) or t.metadata.get("difficulty") or "none",
+                          "has_web": bool(t.web_goals), "has_embodied": bool(t.embodied_goals)})
+         for t in interleave(chosen)],
         name="ewa-mcp" + (f"-{domains[0]}" if domains and len(domains) == 1 else ""),
     )
+
+
+def interleave(tasks: list[Any]) -> list[Any]:
+    """The tasks in turns across domains (the first of each domain, then the second, ...), each domain's order
+    kept, so ``--limit N`` on the suite plays every domain rather than the first one's tasks."""
+    by_domain: dict[str, list[Any]] = {}
+    for t in tasks:
+        by_domain.setdefault(t.domain, []).append(t)
+    queues = list(by_domain.values())
+    return [q[i] for i in range(max((len(q) for q in queues), default=0)) for q in queues if i < len(q)]
 
 
 # ---------------------------------------------------------------- the MCP server of this eval
@@ -267,6 +282,69 @@ def _level_metric(level: str):
 GEO_METRICS = [_level_metric(level) for level in GEO_LEVELS]
 
 
+def _overall(score: Any) -> float:
+    value = score.score.value
+    return float(value.get("overall") or 0.0) if isinstance(value, dict) else 0.0
+
+
+def _stderr(values: list[float]) -> float:
+    """The standard error of the mean (sample standard deviation / sqrt(n)); 0 for fewer than two values."""
+    n = len(values)
+    if n < 2:
+        return 0.0
+    mean = sum(values) / n
+    return (sum((v - mean) ** 2 for v in values) / (n - 1) / n) ** 0.5
+
+
+@metric(name="overall_stderr")
+def overall_stderr():
+    """The standard error of the overall success rate: report it beside ``overall`` (overall ± 1.96 stderr)."""
+    def compute(scores: list[Any]) -> float:
+        return _stderr([_overall(s) for s in scores])
+
+    return compute
+
+
+def _grouped_overall(key: str):
+    """Overall success and its standard error per value of a sample metadata key (domain, difficulty)."""
+    def compute(scores: list[Any]) -> dict[str, float]:
+        groups: dict[str, list[float]] = {}
+        for s in scores:
+            groups.setdefault(str((s.sample_metadata or {}).get(key, "none")), []).append(_overall(s))
+        out: dict[str, float] = {}
+        for name, values in sorted(groups.items()):
+            out[name] = sum(values) / len(values)
+            out[f"{name}_stderr"] = _stderr(values)
+        return out
+
+    return compute
+
+
+@metric(name="by_domain")
+def overall_by_domain():
+    return _grouped_overall("domain")
+
+
+@metric(name="by_difficulty")
+def overall_by_difficulty():
+    return _grouped_overall("difficulty")
+
+
+def task_metrics(dataset: Any) -> list[Any]:
+    """The metrics that apply to a dataset: overall with its standard error and per-domain and per-difficulty
+    breakdowns always; web_only, embodied_only and the geolocation levels only where some sample has web goals,
+    embodied goals or is a geolocation task (elsewhere they would have no samples and read NaN)."""
+    out = [overall_success(), overall_stderr(), completion_rate(), overall_by_domain(), overall_by_difficulty()]
+    meta = [s.metadata or {} for s in dataset]
+    if any(m.get("has_web") for m in meta):
+        out.append(web_only_success())
+    if any(m.get("has_embodied") for m in meta):
+        out.append(embodied_only_success())
+    if any(m.get("domain") == "geolocation" for m in meta):
+        out += [m() for m in GEO_METRICS]
+    return out
+
+
 def score_value(result: Any) -> dict[str, float]:
     """The grader's EpisodeResult as one Inspect score: 1/0 successes, completion in [0, 1], and 1/0 flags
     saying which side-metrics apply to the episode (web goals, embodied goals, a geolocation answer)."""
@@ -316,10 +394,14 @@ def ewa_task(domains: list[str] | None, *, difficulty: str | None = None, sample
     dirs = ([str(Path(p).resolve()) for p in tasks_dir.split(os.pathsep) if p] if tasks_dir
             else [str(d) for d in default_task_dirs()])
     out = str(Path(run_dir).resolve()) if run_dir else str((runs_dir() / ("inspect-" + new_run_id())).resolve())
+    dataset = ewa_dataset(domains, difficulty, sample, tasks, os.pathsep.join(dirs))
     return Task(
-        dataset=ewa_dataset(domains, difficulty, sample, tasks, os.pathsep.join(dirs)),
+        dataset=dataset,
         solver=ewa_agent(run_dir=out, task_dirs=dirs, observation=observation, max_turns=max_turns),
         scorer=ewa_grader(),
+        metrics=task_metrics(dataset),
+        # The task suites ship with the package: a new release may change tasks, tools or grading.
+        version=__version__,
         metadata={"run_dir": out, "ewa_mcp_domains": domains or list(DOMAINS)},
     )
 

@@ -19,6 +19,7 @@ from . import __version__
 from .core import registry
 from .core.episodes import EpisodeManager
 from .core.paths import check_run_dir, runs_dir, task_dirs
+from .core.prompts import register_prompts
 from .core.records import new_run_id
 from .core.schemas import make_portable
 from .core.services import Services
@@ -124,6 +125,7 @@ def build_server(config: ServerConfig | None = None) -> tuple[MCPServer, Episode
     mcp.episodes = episodes
     for module_name in registry.tool_groups():
         importlib.import_module(module_name).register(mcp, episodes)
+    register_prompts(mcp)  # one prompt per domain: the agent instructions (ewa_mcp/core/prompts.py)
     check_declared(mcp)  # every tool has a title and annotations (ewa_mcp/core/tool_table.py)
     make_portable(mcp)  # no $ref/$defs, closed argument objects: every client's converter accepts them
     return mcp, episodes

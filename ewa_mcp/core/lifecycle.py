@@ -14,7 +14,7 @@ from . import registry
 from .environment import Observation
 from .episodes import EpisodeError, EpisodeManager
 from .options import EpisodeOptions
-from .response import IMAGE_NAME, StepOutput, footer, image_links, step_result, tool_result
+from .response import IMAGE_NAME, StepOutput, footer, image_links, observation_data, step_result, tool_result
 from .tool_table import EpisodeId, define_tool
 
 DomainName = str  # replaced by a Literal of the registry's domain names in register()
@@ -179,7 +179,7 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
             active_environment=episode.active,
             environments={k: type(v).name for k, v in episode.environments.items()},
             step_limit=episode.task.step_limit,
-            observation=observation.data,
+            observation=observation_data(episode, observation),
         )
         envs = ", ".join(f"{k}={type(v).name}" for k, v in episode.environments.items()) or "none"
         text = (

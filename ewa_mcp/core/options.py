@@ -28,3 +28,9 @@ class EpisodeOptions(BaseModel):
     web_max_chars: int | None = Field(None, ge=500, le=500_000,
                                       description="size budget of the web observation (default 24000 characters)")
     web_viewport_only: bool | None = Field(None, description="web observation lists only elements in the viewport")
+    structured: Literal["full", "compact"] | None = Field(
+        None, description="structured content of observations: full (the observation's data; the default) or "
+                          "compact (status and step counts only; the text carries the observation)")
+    web_incremental: bool | None = Field(
+        None, description="web observations after the first on a page send only the lines that changed "
+                          "(default false: the whole page every time)")

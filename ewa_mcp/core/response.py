@@ -62,6 +62,14 @@ def footer(episode: Any) -> str:
     return line + "]"
 
 
+def observation_data(episode: Any, observation: Observation) -> dict[str, Any]:
+    """The observation as structured content: all its data, or with the episode option ``structured: compact``
+    only its kind (the text already carries the observation; a model that reads both pays for it twice)."""
+    if (getattr(episode, "options", None) or {}).get("structured") == "compact":
+        return {"kind": observation.data["kind"]} if "kind" in observation.data else {}
+    return observation.data
+
+
 def step_result(episode: Any, observation: Observation, *, include_images: bool = True) -> CallToolResult:
     model = StepOutput(
         episode_id=episode.id,
@@ -69,7 +77,7 @@ def step_result(episode: Any, observation: Observation, *, include_images: bool 
         active_environment=episode.active,
         steps=episode.steps,
         steps_left=episode.steps_left,
-        observation=observation.data,
+        observation=observation_data(episode, observation),
     )
     text = f"{observation.text}\n{footer(episode)}"
     images = observation.images if include_images else []

@@ -1,11 +1,11 @@
 """Fonts for sign text in any script (and the script of a text), with a deterministic Latin fallback.
 
-Fonts are looked up at fixed paths (Debian's fonts-dejavu-core, fonts-noto-core and
-fonts-noto-cjk), never through fontconfig, so the choice does not depend on a user's font
-configuration. When no listed font covers a script the renderer draws the Latin
-transliteration instead; either way the same input renders the same pixels on the same
-font set. Set ``EWA_GEO_FONT_DIRS`` (os.pathsep-separated) to add directories searched
-first by file name.
+The fonts ship with the package (``fonts/``: DejaVu Sans Bold under the Bitstream Vera licence, the Noto Sans
+Bold faces under the SIL Open Font License, their licence texts beside them; scripts/make-fonts.py refreshes them),
+and nothing is read from system paths or fontconfig: the same input renders the same pixels on every machine.
+The Noto Sans CJK faces are cut to the characters the package's signs use. When no shipped font covers a script
+the renderer draws the Latin transliteration instead. ``EWA_GEO_FONT_DIRS`` (os.pathsep-separated) names
+directories searched first by file name: an explicit choice, which changes the pixels.
 """
 
 from __future__ import annotations
@@ -15,38 +15,40 @@ from pathlib import Path
 
 from PIL import ImageFont
 
-_DEJAVU = "/usr/share/fonts/truetype/dejavu/"
-_NOTO = "/usr/share/fonts/truetype/noto/"
-_CJK = "/usr/share/fonts/opentype/noto/"
+FONT_DIR = Path(__file__).resolve().parent / "fonts"
+_DEJAVU = str(FONT_DIR / "DejaVuSans-Bold.ttf")
 
-# script -> candidate (file, collection index) pairs, best first. Index selects the CJK face
-# whose glyph shapes match the region (JP, KR, SC, TC in Noto Sans CJK).
+
+def _noto(name: str) -> str:
+    return str(FONT_DIR / f"NotoSans{name}-Bold.ttf")
+
+
+# script -> candidate (file, index) pairs, best first. The CJK faces match the region's glyph shapes (JP, KR, SC,
+# TC); each is a file of its own (the index is for a collection file named by EWA_GEO_FONT_DIRS).
 _CANDIDATES: dict[str, tuple[tuple[str, int], ...]] = {
-    "latin": ((_DEJAVU + "DejaVuSans-Bold.ttf", 0), (_NOTO + "NotoSans-Bold.ttf", 0),
-              ("/usr/share/fonts/truetype/liberation/LiberationSans-Bold.ttf", 0)),
-    "greek": ((_DEJAVU + "DejaVuSans-Bold.ttf", 0), (_NOTO + "NotoSans-Bold.ttf", 0)),
-    "cyrillic": ((_DEJAVU + "DejaVuSans-Bold.ttf", 0), (_NOTO + "NotoSans-Bold.ttf", 0)),
-    "armenian": ((_NOTO + "NotoSansArmenian-Bold.ttf", 0), (_DEJAVU + "DejaVuSans-Bold.ttf", 0)),
-    "georgian": ((_NOTO + "NotoSansGeorgian-Bold.ttf", 0), (_DEJAVU + "DejaVuSans-Bold.ttf", 0)),
-    "hebrew": ((_NOTO + "NotoSansHebrew-Bold.ttf", 0), (_DEJAVU + "DejaVuSans-Bold.ttf", 0)),
-    "arabic": ((_NOTO + "NotoSansArabic-Bold.ttf", 0), (_NOTO + "NotoNaskhArabic-Bold.ttf", 0),
-               (_DEJAVU + "DejaVuSans-Bold.ttf", 0)),
+    "latin": ((_DEJAVU, 0),),
+    "greek": ((_DEJAVU, 0),),
+    "cyrillic": ((_DEJAVU, 0),),
+    "armenian": ((_noto("Armenian"), 0), (_DEJAVU, 0)),
+    "georgian": ((_noto("Georgian"), 0), (_DEJAVU, 0)),
+    "hebrew": ((_noto("Hebrew"), 0), (_DEJAVU, 0)),
+    "arabic": ((_noto("Arabic"), 0), (_DEJAVU, 0)),
     # Lines mixing Arabic or Hebrew with Latin letters (plates such as "مصر EGYPT") need one font
     # covering both; DejaVu Sans does.
-    "arabic_latin": ((_DEJAVU + "DejaVuSans-Bold.ttf", 0),),
-    "hebrew_latin": ((_DEJAVU + "DejaVuSans-Bold.ttf", 0),),
-    "devanagari": ((_NOTO + "NotoSansDevanagari-Bold.ttf", 0),),
-    "bengali": ((_NOTO + "NotoSansBengali-Bold.ttf", 0),),
-    "tamil": ((_NOTO + "NotoSansTamil-Bold.ttf", 0),),
-    "kannada": ((_NOTO + "NotoSansKannada-Bold.ttf", 0),),
-    "sinhala": ((_NOTO + "NotoSansSinhala-Bold.ttf", 0),),
-    "thai": ((_NOTO + "NotoSansThai-Bold.ttf", 0),),
-    "khmer": ((_NOTO + "NotoSansKhmer-Bold.ttf", 0),),
-    "ethiopic": ((_NOTO + "NotoSansEthiopic-Bold.ttf", 0),),
-    "japanese": ((_CJK + "NotoSansCJK-Bold.ttc", 0),),
-    "korean": ((_CJK + "NotoSansCJK-Bold.ttc", 1),),
-    "han_simplified": ((_CJK + "NotoSansCJK-Bold.ttc", 2),),
-    "han_traditional": ((_CJK + "NotoSansCJK-Bold.ttc", 3),),
+    "arabic_latin": ((_DEJAVU, 0),),
+    "hebrew_latin": ((_DEJAVU, 0),),
+    "devanagari": ((_noto("Devanagari"), 0),),
+    "bengali": ((_noto("Bengali"), 0),),
+    "tamil": ((_noto("Tamil"), 0),),
+    "kannada": ((_noto("Kannada"), 0),),
+    "sinhala": ((_noto("Sinhala"), 0),),
+    "thai": ((_noto("Thai"), 0),),
+    "khmer": ((_noto("Khmer"), 0),),
+    "ethiopic": ((_noto("Ethiopic"), 0),),
+    "japanese": ((str(FONT_DIR / "NotoSansCJKjp-Bold-subset.otf"), 0),),
+    "korean": ((str(FONT_DIR / "NotoSansCJKkr-Bold-subset.otf"), 0),),
+    "han_simplified": ((str(FONT_DIR / "NotoSansCJKsc-Bold-subset.otf"), 0),),
+    "han_traditional": ((str(FONT_DIR / "NotoSansCJKtc-Bold-subset.otf"), 0),),
 }
 
 # Unicode block ranges -> script (first match wins; Latin is the default).
@@ -96,7 +98,7 @@ def _extra_dirs() -> list[Path]:
 
 @lru_cache(maxsize=64)
 def font_file(script: str) -> tuple[str, int] | None:
-    """The font (path, index) used for a script, or None when none is installed."""
+    """The font (path, index) used for a script, or None when none is shipped (or named by EWA_GEO_FONT_DIRS)."""
     for path, index in _CANDIDATES.get(script, ()):
         for directory in _extra_dirs():
             candidate = directory / Path(path).name
@@ -129,5 +131,5 @@ def drawable(native: str, latin: str) -> tuple[str, str]:
 
 
 def installed_scripts() -> dict[str, bool]:
-    """Which scripts render natively on this machine (reported by the benchmark and docs)."""
+    """Which scripts render natively (reported by the benchmark and docs): all of them, from the shipped fonts."""
     return {script: has_font(script) for script in _CANDIDATES}

@@ -187,3 +187,35 @@ def test_inspect_view_serves_the_episodes(venv, inspect_eval_dir):
             view.wait(timeout=20)
         except subprocess.TimeoutExpired:
             view.kill()
+
+
+def test_the_installed_server_offers_a_prompt_per_domain_and_ships_its_fonts(venv, tmp_path):
+    """What `uvx ewa-mcp serve` runs (the wheel's `ewa-mcp serve`, outside the checkout): its MCP prompts carry the
+    agent instructions of each domain, and the sign fonts come from the wheel, not the system."""
+    script = r'''
+import asyncio, json, sys
+from mcp import Client, StdioServerParameters
+
+async def main():
+    params = StdioServerParameters(command=sys.argv[1], args=["serve"])
+    async with Client(params) as client:
+        prompts = {p.name: [a.name for a in p.arguments or []] for p in (await client.list_prompts()).prompts}
+        cooking = (await client.get_prompt("cooking", {"task_id": "cooking-cook-0001"})).messages[0].content.text
+        geo = (await client.get_prompt("geolocation", {})).messages[0].content.text
+    print(json.dumps({"prompts": prompts, "cooking": cooking, "geo": geo}))
+
+asyncio.run(main())
+'''
+    out = _run([str(venv / "bin" / "python"), "-c", script, str(venv / "bin" / "ewa-mcp")], cwd=tmp_path,
+               env={"EWA_RUNS_DIR": str(tmp_path / "runs")})
+    assert out.returncode == 0, out.stderr[-2000:]
+    got = json.loads(out.stdout.strip().splitlines()[-1])
+    assert {"cooking", "navigation", "shopping", "traveling", "geolocation"} <= set(got["prompts"])
+    assert all(args == ["task_id"] for args in got["prompts"].values())
+    assert 'start_episode(task_id="cooking-cook-0001")' in got["cooking"] and "kitchen_* tools" in got["cooking"]
+    assert "switch_environment" in got["cooking"] and "submit_location" in got["geo"]
+    fonts = _run([str(venv / "bin" / "python"), "-c", "from ewa_mcp.street_drawing import fonts; "
+                  "print(fonts.font_file('japanese')[0]); print(fonts.font_file('thai')[0])"], cwd=tmp_path)
+    assert fonts.returncode == 0, fonts.stderr[-2000:]
+    for path in fonts.stdout.split():
+        assert path.startswith(str(venv)) and "street_drawing/fonts/" in path, path

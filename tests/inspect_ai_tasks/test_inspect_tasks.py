@@ -105,3 +105,44 @@ def test_dataset_filters(tmp_path):
         inspect_tasks.ewa_dataset(["cooking"], difficulty="impossible")
     with pytest.raises(inspect_tasks.TaskStoreMissing, match="--tasks-dir DIR"):
         inspect_tasks.ewa_dataset(None, tasks_dir_=str(tmp_path))
+
+
+def _metric_names(task) -> list[str]:
+    from inspect_ai._util.registry import registry_info
+
+    return [registry_info(m).name.split("/")[-1] for m in task.metrics]
+
+
+def test_limit_samples_every_domain_and_tasks_carry_a_version(tmp_path):
+    from ewa_mcp import __version__
+
+    suite = inspect_tasks.suite(sample=2, run_dir=str(tmp_path / "run"))
+    first = [s.metadata["domain"] for s in suite.dataset][:len(inspect_tasks.DOMAINS)]
+    assert sorted(first) == sorted(inspect_tasks.DOMAINS)  # --limit 5 plays one task of each domain
+    assert suite.version == __version__
+    assert inspect_tasks.cooking(sample=1, run_dir=str(tmp_path / "run")).version == __version__
+
+
+def test_metrics_apply_to_the_task_so_none_reads_nan(tmp_path):
+    cooking = _metric_names(inspect_tasks.cooking(sample=2, run_dir=str(tmp_path / "run")))
+    assert {"overall", "overall_stderr", "completion", "by_domain", "by_difficulty"} <= set(cooking)
+    assert not any(name.startswith("geo_") for name in cooking)  # no geolocation sample: no geolocation metric
+    geo = _metric_names(inspect_tasks.geolocation(sample=2, run_dir=str(tmp_path / "run")))
+    assert {"geo_continent", "geo_street", "overall_stderr"} <= set(geo)
+
+
+def test_standard_errors_and_the_per_domain_breakdown():
+    from inspect_ai.scorer import SampleScore, Score
+
+    def sample(domain, difficulty, overall):
+        return SampleScore(score=Score(value={"overall": overall}), sample_id=f"{domain}-{overall}",
+                           sample_metadata={"domain": domain, "difficulty": difficulty})
+
+    scores = [sample("cooking", "easy", 1.0), sample("cooking", "hard", 0.0), sample("navigation", "easy", 1.0),
+              sample("navigation", "easy", 1.0)]
+    assert inspect_tasks.overall_stderr()(scores) == pytest.approx((0.25 / 4) ** 0.5)  # sd 0.5, n 4
+    by_domain = inspect_tasks.overall_by_domain()(scores)
+    assert by_domain == pytest.approx({"cooking": 0.5, "cooking_stderr": 0.5, "navigation": 1.0,
+                                       "navigation_stderr": 0.0})
+    assert inspect_tasks.overall_by_difficulty()(scores)["easy"] == 1.0
+    assert inspect_tasks.overall_stderr()(scores[:1]) == 0.0  # one sample: no spread, not NaN

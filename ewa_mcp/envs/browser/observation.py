@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any, Literal
 from playwright.async_api import Error as PlaywrightError
 
 from ewa_mcp.core.environment import Observation
+from .incremental import tree_changes
 from .tree_text import RenderedTree, render_tree
 from .som import DRAW_MARKS_JS, REMOVE_MARKS_JS, marks_payload
 from .tabs import PAGE_INFO_JS, Tab, take_snapshot
@@ -51,6 +52,7 @@ def build_observation(
     viewport_only: bool,
     budget: int,
     png: bytes = b"",
+    changes: str | None = None,
 ) -> Observation:
     """``body`` "tree": the accessibility tree as text (and in ``data["tree"]``); "marks": the list
     of marked elements that label ``png`` (``data["tree"]`` is None: the tree is not shown)."""
@@ -66,6 +68,9 @@ def build_observation(
     if body == "marks":  # the image carries the page: list what its labels name
         shown = "Marked elements (see the screenshot):\n" + "\n".join(
             f"[{m.id}] {m.role} '{m.name}'" for m in rendered.marks)
+    elif changes is not None:  # web_incremental: the page the agent read, changed (incremental.py)
+        shown = (f"Accessibility tree, changes since your last observation ({rendered.lines} lines; "
+                 f"browser_snapshot shows it whole):\n{changes}")
     else:
         scope = "visible part of the page" if viewport_only else "whole page"
         shown = f"Accessibility tree ({scope}):\n{rendered.text}"
@@ -88,14 +93,16 @@ def build_observation(
         "lines_total": rendered.total_lines,
         "marks": len(rendered.marks),
         "notices": notices,
+        "incremental": changes is not None,
     }
     return Observation(text="\n".join(header) + "\n\n" + shown, data=data, images=[png] if png else [])
 
 
 async def observe(session: BrowserSession, *, viewport_only: bool | None = None, max_chars: int | None = None,
-                  view: Literal["mode", "tree", "screenshot"] = "mode") -> Observation:
+                  view: Literal["mode", "tree", "screenshot"] = "mode", incremental: bool = False) -> Observation:
     """``view`` "mode": what the observation mode shows (text: tree; vision: screenshot and its
-    marks; both: tree and screenshot); "tree" and "screenshot": that alone, in any mode."""
+    marks; both: tree and screenshot); "tree" and "screenshot": that alone, in any mode.
+    ``incremental``: the page after an action, sent as its changes when the episode asks for that."""
     tab = session.current()
     mode = session.mode()
     if view == "mode":
@@ -111,7 +118,8 @@ async def observe(session: BrowserSession, *, viewport_only: bool | None = None,
         collected = (await take_snapshot(session, tab, boxes=True, count=False), b"")
     else:
         collected = await collect(session, tab, want_image, count=False)
-    return await present(session, tab, collected, viewport_only=viewport_only, max_chars=max_chars, body=body)
+    return await present(session, tab, collected, viewport_only=viewport_only, max_chars=max_chars, body=body,
+                         incremental=incremental)
 
 
 async def collect(session: BrowserSession, tab: Tab, want_image: bool,
@@ -153,7 +161,7 @@ async def capture(session: BrowserSession, tab: Tab) -> bytes:
 
 async def present(session: BrowserSession, tab: Tab, collected: tuple[list[Any], bytes], *,
                   viewport_only: bool | None = None, max_chars: int | None = None,
-                  body: Literal["tree", "marks"] | None = None) -> Observation:
+                  body: Literal["tree", "marks"] | None = None, incremental: bool = False) -> Observation:
     facts, png = collected
     # The page now shown names the tab: after a navigation the title the snapshot kept may be
     # the previous page's (an observation after an action reads the facts separately).
@@ -169,10 +177,15 @@ async def present(session: BrowserSession, tab: Tab, collected: tuple[list[Any],
     for i, t in enumerate(session.tabs):
         url = t.last_url if t.page.is_closed() else t.page.url
         lines.append(TabLine(i, t.last_title, url, session.site_url(url), i == session.active))
+    body = body or ("marks" if session.mode() == "vision" else "tree")
+    tree_lines = rendered.text.splitlines() if body == "tree" else None
+    changes = None
+    if incremental and tree_lines is not None and session.options.get("web_incremental"):
+        changes = tree_changes(session.seen_tree, tree_lines)
+    session.seen_tree = tree_lines  # what the agent now knows of the page (a marks list shows no tree)
     return build_observation(tabs=lines, facts=facts, url=tab.page.url, site_url=session.site_url(tab.page.url),
-                             rendered=rendered, notices=session.take_notices(),
-                             body=body or ("marks" if session.mode() == "vision" else "tree"),
-                             viewport_only=viewport_only, budget=budget, png=png)
+                             rendered=rendered, notices=session.take_notices(), body=body,
+                             viewport_only=viewport_only, budget=budget, png=png, changes=changes)
 
 
 async def _refresh_title(tab: Tab) -> None:

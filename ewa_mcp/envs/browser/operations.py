@@ -81,7 +81,7 @@ class BrowserActions:
                 # its result is what the agent must see (reporting a timeout would make it repeat the action).
                 return await self._observe_when_free(action_name)
             if not settle or tab.page.is_closed():
-                return await observe(s)
+                return await observe(s, incremental=True)
             try:
                 return await self._settle_and_observe(action_name, tab, mark, popups_before if popups else None)
             except (PageBusyError, PlaywrightTimeoutError):
@@ -129,7 +129,7 @@ class BrowserActions:
             collected = await collect(s, tab, want_image)
         else:
             collected = await collect(s, tab, want_image, known=(answer[0], answer[1], answered_generation))
-        return await present(s, current, collected)
+        return await present(s, current, collected, incremental=True)
 
     async def _observe_when_free(self, action_name: str) -> Observation:
         """The observation after an action that took effect while the page was too busy to be read in time:
@@ -141,7 +141,7 @@ class BrowserActions:
         end = time.monotonic() + s.config.navigation_timeout_s
         while True:
             try:
-                return await observe(s)
+                return await observe(s, incremental=True)
             except (PageBusyError, PlaywrightTimeoutError):
                 if time.monotonic() >= end:
                     break

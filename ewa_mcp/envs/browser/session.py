@@ -86,6 +86,7 @@ class BrowserSession:
         self.services = services
         self.config = BrowserConfig()
         self.options: dict[str, Any] = {}
+        self.seen_tree: list[str] | None = None  # the tree lines of the last observation (incremental.py)
         self.service: BrowserService | None = None
         self.policy: UrlPolicy | None = None
         self.context: Any = None
@@ -112,6 +113,7 @@ class BrowserSession:
     async def start(self, task: Any, options: dict[str, Any]) -> None:
         """Settings, browser, sites and URL policy; a context; one tab at the task's start page."""
         self.options = dict(options or {})
+        self.seen_tree = None
         self.config = self.services.settings.browser  # validated when the settings were loaded
         try:
             for origin in self.config.allow_origins:
