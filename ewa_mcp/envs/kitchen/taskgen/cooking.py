@@ -20,7 +20,7 @@ from ewa_mcp.websites.recipes.catalog import Filters, load_catalog
 from ewa_mcp.websites.shop import catalog as shop_catalog
 from ewa_mcp.websites.recipes.vocabulary import EQUIPMENT_WORDS, KITCHEN_PRODUCTS, required_equipment
 from ewa_mcp.taskgen.common import call, ref, rng_for, site_url, step_limit_for
-from .recipe_goals import FOODS, PIECE_SOURCE, goals_from_ops, recipe_ops
+from .recipe_goals import FOODS, PIECE_SOURCE, goals_from_ops, recipe_ops, rival_foods
 
 SCENES = [f"FloorPlan{i}" for i in range(1, 31)]
 TASKS_PER_RECIPE = 5  # cook and hard tasks of one recipe, together
@@ -163,6 +163,15 @@ def needed_foods(ops: list[dict[str, Any]]) -> set[str]:
     return {PIECE_SOURCE.get(op.get("object", ""), op.get("object", "")) for op in ops} & FOODS
 
 
+def kitchen_goals(recipe: dict[str, Any], scene: str, buy: list[str]) -> list[Any]:
+    """The recipe's kitchen goals in this kitchen: its outcome, and what tells it from its look-alikes and
+    from doing everything (a food only a look-alike uses, when this kitchen has it, stays whole and raw)."""
+    ops = recipe_ops(recipe)
+    rivals = [recipe_ops(r) for r in load_catalog().recipes if r["name"] == recipe["name"] and r["id"] != recipe["id"]]
+    present = scene_inventory(scene)["food"] | set(buy)
+    return goals_from_ops(ops, [f for f in rival_foods(ops, rivals) if f in present])
+
+
 def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str, Any], n: int,
               buy: list[str] | None = None, kind: str | None = None) -> Task | None:
     buy = list(buy or [])
@@ -202,7 +211,7 @@ def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str
         start=StartState(environment="web", web=WebStart(start_url="recipes:/"),
                          embodied=KitchenStart(scene=scene)),
         web_goals=web_goals,
-        embodied_goals=goals_from_ops(ops),
+        embodied_goals=kitchen_goals(recipe, scene, buy),
         # Budget for an agent that reads every step (Next, Next, ...), which the oracle skips.
         step_limit=step_limit_for(len(oracle) + len(recipe["steps"])),
         oracle=oracle,
