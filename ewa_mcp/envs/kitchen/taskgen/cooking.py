@@ -19,7 +19,7 @@ from ewa_mcp.core.taskmodel import KitchenStart, OrderPlaced, RecipeCompleted, S
 from ewa_mcp.websites.recipes.catalog import Filters, load_catalog
 from ewa_mcp.websites.shop import catalog as shop_catalog
 from ewa_mcp.websites.recipes.vocabulary import EQUIPMENT_WORDS, KITCHEN_PRODUCTS, required_equipment
-from ewa_mcp.taskgen.common import call, ref, rng_for, site_url, step_limit_for
+from ewa_mcp.taskgen.common import call, ref, rng_for, site_url, step_budget
 from .recipe_goals import FOODS, PIECE_SOURCE, goals_from_ops, recipe_ops, rival_foods
 
 SCENES = [f"FloorPlan{i}" for i in range(1, 31)]
@@ -212,8 +212,8 @@ def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str
                          embodied=KitchenStart(scene=scene)),
         web_goals=web_goals,
         embodied_goals=kitchen_goals(recipe, scene, buy),
-        # Budget for an agent that reads every step (Next, Next, ...), which the oracle skips.
-        step_limit=step_limit_for(len(oracle) + len(recipe["steps"])),
+        # The budget leaves room for an agent that reads every step (Next, Next, ...), which the oracle skips.
+        step_limit=step_budget("cooking", DIFFICULTY[kind], len(oracle) + len(recipe["steps"])),
         oracle=oracle,
         metadata={"recipe_id": recipe["id"], "recipe_name": recipe["name"], "scene": scene,
                   "constraint": suffix or None, "pair_id": recipe.get("pair_id"),
