@@ -29,7 +29,8 @@ SHOPPING_VARIANTS_TARGET = 40
 DIFFICULTY = {"cook": "easy", "buy": "medium", "hard": "hard"}
 # Every cooking intent says which parts of a recipe the kitchen goal leaves out (issue 16).
 KITCHEN_SCOPE = ("Only the kitchen steps count: steps and ingredients the recipe page marks as not in the "
-                 "kitchen are not part of the kitchen goal.")
+                 "kitchen are not part of the kitchen goal. Do what they say, the way they say it, and no more: "
+                 "food they do not cut or cook stays whole and raw, and a dish holds only what they put on it.")
 
 DIET_LABEL = {"vegetarian": "Vegetarian", "vegan": "Vegan", "non-vegetarian": "Non-vegetarian"}
 

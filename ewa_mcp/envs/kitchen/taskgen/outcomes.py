@@ -23,7 +23,9 @@ from ..vocabulary import PIECE_FOR
 from .recipe_goals import FOODS
 
 
-def _run(scene: str, ops: list[dict[str, Any]], delivered: list[str], stop_on_error: bool) -> dict[str, Any] | None:
+def _planned(scene: str, ops: list[dict[str, Any]], delivered: list[str], stop_on_error: bool) -> Any:
+    """The planner after carrying out ``ops`` (None when the kitchen cannot be set up, or an op fails and
+    ``stop_on_error``); otherwise a failed op is skipped and the rest go on."""
     try:
         planner = _Planner(scene, 0, delivered)
     except PlanError:
@@ -36,7 +38,27 @@ def _run(scene: str, ops: list[dict[str, Any]], delivered: list[str], stop_on_er
         except PlanError:
             if stop_on_error:
                 return None
-    return planner.session.final_state()
+    return planner
+
+
+def _run(scene: str, ops: list[dict[str, Any]], delivered: list[str], stop_on_error: bool) -> dict[str, Any] | None:
+    planner = _planned(scene, ops, delivered, stop_on_error)
+    return None if planner is None else planner.session.final_state()
+
+
+def kitchen_calls(scene: str, ops: list[dict[str, Any]], delivered: list[str] = ()) -> list[dict[str, Any]]:  # type: ignore[assignment]
+    """The kitchen tool calls that carry out as many of ``ops`` as this kitchen allows (heuristic agents)."""
+    planner = _planned(scene, list(ops), list(delivered), stop_on_error=False)
+    return [] if planner is None else list(planner.calls)
+
+
+def kitchen_foods(scene: str, delivered: list[str] = ()) -> list[str]:  # type: ignore[assignment]
+    """The food types a kitchen holds at the start, with the delivered ones."""
+    try:
+        planner = _Planner(scene, 0, list(delivered))
+    except PlanError:
+        return []
+    return sorted({o["objectType"] for o in planner.objects.values()} & FOODS)
 
 
 def recipe_outcome(scene: str, ops: list[dict[str, Any]], delivered: list[str] = ()) -> dict[str, Any] | None:  # type: ignore[assignment]
@@ -59,12 +81,7 @@ def everything_ops(foods: list[str]) -> list[dict[str, Any]]:
 
 def everything_outcome(scene: str, delivered: list[str] = ()) -> dict[str, Any] | None:  # type: ignore[assignment]
     """The final state after doing everything to every food in the kitchen (and the delivered ones)."""
-    try:
-        planner = _Planner(scene, 0, list(delivered))
-    except PlanError:
-        return None
-    foods = sorted({o["objectType"] for o in planner.objects.values()} & FOODS)
-    return _run(scene, everything_ops(foods), list(delivered), stop_on_error=False)
+    return _run(scene, everything_ops(kitchen_foods(scene, delivered)), list(delivered), stop_on_error=False)
 
 
 def grade_kitchen(goals: list[Any], state: dict[str, Any]) -> list[ConditionResult]:
