@@ -109,6 +109,11 @@ def goal_types(goals: list[Any]) -> set[str]:
             types.add(g.object_type)
         elif isinstance(g, ObjectIn):
             types.update((g.object_type, g.receptacle_type))
+        elif getattr(g, "kind", None) in ("cooked_with", "holds_only"):
+            # a food a negative condition names ("the tomato stays whole") is wanted: touching it is a
+            # goal failure, not instruction-action misalignment; the same for the dish's allowed foods
+            extra = [_field(g, "object_type"), _field(g, "receptacle_type"), *(_field(g, "allowed") or [])]
+            types.update(t for t in extra if isinstance(t, str))
     return types
 
 
