@@ -138,3 +138,18 @@ def test_heuristics_read_the_dish_and_the_missing_foods_from_the_intent():
     assert dish_of(intent) == name
     assert missing_foods(intent) == ["Egg", "Potato"]
     assert missing_foods(f"Cook {name}.") == []
+
+
+def test_following_every_same_named_recipe_fails_the_recipe_goal():
+    from ewa_mcp.core.taskmodel import RecipeCompleted
+    from ewa_mcp.envs.browser.checks import check_recipe
+
+    def step(rid: str, n: int, of: int) -> dict:
+        return {"site": "recipes", "type": "recipe_step", "recipe_id": rid, "step": n, "of": of}
+
+    goal = RecipeCompleted(recipe_id="r004")
+    assert check_recipe(goal, [step("r004", 7, 7)]).met is True
+    assert check_recipe(goal, [step("r003", 2, 6), step("r004", 7, 7)]).met is True  # compared, then chose
+    both = check_recipe(goal, [step("r004", 7, 7), step("r003", 6, 6)])
+    assert both.met is False and "follow one recipe" in (both.note or "")
+    assert check_recipe(goal, [step("r003", 6, 6)]).met is False

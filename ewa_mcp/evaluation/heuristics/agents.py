@@ -347,10 +347,11 @@ class CookEverythingAgent:
 
 
 class LookAlikeAgent:
-    """Choosing by name: follow the first recipe the site lists with the dish's name, ignoring the intent's
-    constraints (diet, equipment, ingredients), to its last step, and cook exactly that recipe's kitchen
-    steps (the planner's calls) after ordering the missing foods. Where the first listed recipe is the
-    task's it does the task; where it is the look-alike, the goals must fail."""
+    """Choosing by name: open the last step of every recipe the site lists with the dish's name (so the
+    recipe goal cannot tell), ignore the intent's constraints (diet, equipment, ingredients), and cook
+    exactly the first listed one's kitchen steps (the planner's calls) after ordering the missing foods.
+    Where the first listed recipe is the task's it does the task; where it is the look-alike, the kitchen
+    goals must fail."""
 
     name = "look-alike"
 
@@ -365,7 +366,8 @@ class LookAlikeAgent:
         if not recipes:
             return await finish(s)
         recipe = recipes[0]
-        await open_last_step(s, recipe)
+        for listed in recipes:
+            await open_last_step(s, listed)
         missing = missing_foods(intent)
         await order_missing(s, missing)
         scene = await enter_kitchen(s)
