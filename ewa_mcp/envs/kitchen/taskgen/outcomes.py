@@ -113,7 +113,7 @@ def audit(tasks: list[Any], fresh_goals: bool = False) -> dict[str, Any]:
 
     catalog = load_catalog()
     by_id = {r["id"]: r for r in catalog.recipes}
-    counts = {"tasks": 0, "oracle_fails": [], "lookalike_tasks": 0, "lookalike_passes": [], "lookalike_not_doable": 0,
+    counts: dict[str, Any] = {"tasks": 0, "oracle_fails": [], "lookalike_tasks": 0, "lookalike_passes": [], "lookalike_not_doable": 0,
               "lookalike_same_kitchen": 0,
               "everything_passes": []}
     for task in tasks:
