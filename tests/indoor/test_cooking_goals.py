@@ -153,3 +153,25 @@ def test_following_every_same_named_recipe_fails_the_recipe_goal():
     both = check_recipe(goal, [step("r004", 7, 7), step("r003", 6, 6)])
     assert both.met is False and "follow one recipe" in (both.note or "")
     assert check_recipe(goal, [step("r003", 6, 6)]).met is False
+
+
+def test_the_kitchen_heuristics_fail_through_the_real_tools(tmp_path, cooking_tasks):
+    """Both cooking heuristics play one task whose first listed same-named recipe is the look-alike (with
+    other kitchen steps) through the MCP server, browser and kitchen; the grader fails both, the kitchen
+    goals included (not only the recipe goal)."""
+    from ewa_mcp.evaluation.heuristics import heuristic_agent
+    from ewa_mcp.evaluation.heuristics.agents import same_named
+    from ewa_mcp.evaluation.runner import play
+    from ewa_mcp.graders import grade_run
+
+    catalog = load_catalog()
+    task = next(t for t in cooking_tasks if t.difficulty == "easy"
+                and (first := same_named(t.metadata["recipe_name"])[0])["id"] != t.metadata["recipe_id"]
+                and recipe_ops(first) != recipe_ops(catalog.by_id.get(t.metadata["recipe_id"]))
+                and recipe_outcome(t.start.embodied.scene, recipe_ops(first)) is not None)
+    for name in ("look-alike", "cook-everything"):
+        run_dir = tmp_path / name
+        play([task], heuristic_agent(name), run_dir=run_dir, task_dirs=[Path(tasks_dir())], progress=False)
+        (episode,) = grade_run(run_dir).episodes
+        assert episode.overall_success is False, name
+        assert episode.embodied_success is False, name
