@@ -13,6 +13,7 @@ recipe planner (``planner.py``) from the task's kitchen and deliveries:
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Any
 
 from ewa_mcp.core.taskmodel import ObjectIn, ObjectState
@@ -46,13 +47,13 @@ def _run(scene: str, ops: list[dict[str, Any]], delivered: list[str], stop_on_er
     return None if planner is None else planner.session.final_state()
 
 
-def kitchen_calls(scene: str, ops: list[dict[str, Any]], delivered: list[str] = ()) -> list[dict[str, Any]]:  # type: ignore[assignment]
+def kitchen_calls(scene: str, ops: list[dict[str, Any]], delivered: Sequence[str] = ()) -> list[dict[str, Any]]:
     """The kitchen tool calls that carry out as many of ``ops`` as this kitchen allows (heuristic agents)."""
     planner = _planned(scene, list(ops), list(delivered), stop_on_error=False)
     return [] if planner is None else list(planner.calls)
 
 
-def kitchen_foods(scene: str, delivered: list[str] = ()) -> list[str]:  # type: ignore[assignment]
+def kitchen_foods(scene: str, delivered: Sequence[str] = ()) -> list[str]:
     """The food types a kitchen holds at the start, with the delivered ones."""
     try:
         planner = _Planner(scene, 0, list(delivered))
@@ -61,7 +62,7 @@ def kitchen_foods(scene: str, delivered: list[str] = ()) -> list[str]:  # type: 
     return sorted({o["objectType"] for o in planner.objects.values()} & FOODS)
 
 
-def recipe_outcome(scene: str, ops: list[dict[str, Any]], delivered: list[str] = ()) -> dict[str, Any] | None:  # type: ignore[assignment]
+def recipe_outcome(scene: str, ops: list[dict[str, Any]], delivered: Sequence[str] = ()) -> dict[str, Any] | None:
     """The final state after a recipe's ops done perfectly, or None when they cannot be done here."""
     return _run(scene, list(ops), list(delivered), stop_on_error=True)
 
@@ -79,7 +80,7 @@ def everything_ops(foods: list[str]) -> list[dict[str, Any]]:
     return ops
 
 
-def everything_outcome(scene: str, delivered: list[str] = ()) -> dict[str, Any] | None:  # type: ignore[assignment]
+def everything_outcome(scene: str, delivered: Sequence[str] = ()) -> dict[str, Any] | None:
     """The final state after doing everything to every food in the kitchen (and the delivered ones)."""
     return _run(scene, everything_ops(kitchen_foods(scene, delivered)), list(delivered), stop_on_error=False)
 

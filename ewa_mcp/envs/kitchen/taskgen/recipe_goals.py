@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Any
 
 from ewa_mcp.core.taskmodel import DomainGoal, ObjectIn, ObjectState
@@ -21,7 +22,7 @@ def recipe_ops(recipe: dict[str, Any]) -> list[dict[str, Any]]:
     return [op for step in recipe["steps"] for op in step.get("ops", [])]
 
 
-def goals_from_ops(ops: list[dict[str, Any]], untouched: list[str] = ()) -> list[ObjectState | ObjectIn | DomainGoal]:  # type: ignore[assignment]
+def goals_from_ops(ops: list[dict[str, Any]], untouched: Sequence[str] = ()) -> list[ObjectState | ObjectIn | DomainGoal]:
     """What the recipe's outcome is (``outcome_goals``) and what tells it apart (``telling_goals``)."""
     return [*outcome_goals(ops), *telling_goals(ops, untouched)]
 
@@ -33,7 +34,7 @@ def rival_foods(ops: list[dict[str, Any]], rivals: list[list[dict[str, Any]]]) -
     return sorted({f for f in theirs if f in FOODS and f not in mine})
 
 
-def telling_goals(ops: list[dict[str, Any]], untouched: list[str] = ()) -> list[ObjectState | DomainGoal]:  # type: ignore[assignment]
+def telling_goals(ops: list[dict[str, Any]], untouched: Sequence[str] = ()) -> list[ObjectState | DomainGoal]:
     """The conditions that fail for a look-alike's outcome and for doing everything (issue 26):
 
     - the method, for every cook op: toasted in the Toaster, cooked in the Microwave, cooked in the Pan
