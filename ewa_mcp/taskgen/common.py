@@ -33,9 +33,31 @@ def site_url(site: str, path: str, **query: Any) -> str:
     return f"{site}:{path}" + ("?" + urlencode(flat) if flat else "")
 
 
-def step_limit_for(oracle_len: int, slack: int = 15) -> int:
-    """Room for an agent that is less direct than the oracle, but not unbounded."""
-    return max(30, 2 * oracle_len + slack)
+# The step limit of a task: one budget per domain and difficulty, never derived from the oracle's length.
+# A limit that follows the oracle gives the answer away (twice the oracle's walk to the right store, read
+# against the map's distances, names the store). Each budget is at least the largest limit the old rule gave
+# any task of its cell, so no task got tighter; the generators refuse a task whose oracle does not fit.
+STEP_BUDGETS: dict[tuple[str, str], int] = {
+    ("cooking", "easy"): 210, ("cooking", "medium"): 220, ("cooking", "hard"): 240,
+    ("navigation", "easy"): 180, ("navigation", "medium"): 190, ("navigation", "hard"): 210,
+    ("shopping", "easy"): 240, ("shopping", "medium"): 270, ("shopping", "hard"): 280,
+    ("traveling", "medium"): 150, ("traveling", "hard"): 160,
+    # Tasks imported from the paper's release (routes of any length, no difficulty of their own).
+    ("navigation", "imported"): 500,
+}
+
+
+def step_budget(domain: str, difficulty: str, oracle_len: int) -> int:
+    """The step limit of every ``domain`` task of this ``difficulty``; ``oracle_len`` is only checked to fit."""
+    try:
+        budget = STEP_BUDGETS[(domain, difficulty)]
+    except KeyError:
+        raise ValueError(f"no step budget for {domain} {difficulty} tasks; add one to STEP_BUDGETS "
+                         "(ewa_mcp/taskgen/common.py)") from None
+    if oracle_len > budget:
+        raise ValueError(f"a {domain} {difficulty} oracle of {oracle_len} steps exceeds the budget of {budget}; "
+                         "raise the budget in STEP_BUDGETS rather than deriving a limit from the oracle")
+    return budget
 
 
 # How a walk ends, said the same way by every intent that involves one (docs/grading.md, "Stop and finish").

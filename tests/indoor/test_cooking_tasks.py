@@ -12,8 +12,8 @@ import pytest
 
 from ewa_mcp.envs.kitchen.planner import scene_inventory
 from ewa_mcp.core.paths import tasks_dir
-from ewa_mcp.envs.kitchen.taskgen.cooking import KITCHEN_SCOPE, kitchen_equipment, singles_out
-from ewa_mcp.envs.kitchen.taskgen.recipe_goals import PIECE_SOURCE, goals_from_ops, recipe_ops
+from ewa_mcp.envs.kitchen.taskgen.cooking import KITCHEN_SCOPE, kitchen_equipment, kitchen_goals, singles_out
+from ewa_mcp.envs.kitchen.taskgen.recipe_goals import PIECE_SOURCE, goals_from_ops, outcome_goals, recipe_ops
 from ewa_mcp.core.taskmodel import TaskStore
 from ewa_mcp.websites.recipes.build_recipes import products_in
 from ewa_mcp.websites.recipes.catalog import load_catalog
@@ -57,8 +57,12 @@ def test_every_step_of_every_cooking_task_is_doable_or_marked(tasks):
             # What the step names beyond the kitchen is listed as such on the page.
             assert set(products_in(step["text"], task.id)) == set(step["not_in_kitchen"]), (task.id, number)
         assert task.metadata["not_kitchen_steps"] == marked
-        # The kitchen goal comes from the kitchen steps' ops and nothing else.
-        assert task.embodied_goals == goals_from_ops(recipe_ops(recipe)), task.id
+        # The kitchen goal comes from the kitchen steps' ops, and from the look-alikes' foods this kitchen
+        # has (they stay whole and raw), nothing else.
+        buy = task.metadata["buy"] or []
+        bought = [buy] if isinstance(buy, str) else list(buy)
+        assert task.embodied_goals == kitchen_goals(recipe, task.start.embodied.scene, bought), task.id
+        assert task.embodied_goals[:len(outcome_goals(recipe_ops(recipe)))] == outcome_goals(recipe_ops(recipe))
 
 
 def test_buy_tasks_are_one_consistent_chain(tasks):

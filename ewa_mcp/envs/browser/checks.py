@@ -54,9 +54,13 @@ def matching_orders(events: list[dict[str, Any]], goal: OrderPlaced) -> list[dic
 
 
 def check_recipe(goal: RecipeCompleted, events: list[dict[str, Any]]) -> ConditionResult:
+    """The goal's recipe was shown to its last step, and no other recipe was: one choice means one choice
+    (issue 26). Opening the last step of every same-named recipe would otherwise pass without choosing;
+    reading a look-alike's first steps to compare is fine."""
     steps = [e for e in events if e.get("site") == "recipes" and e.get("type") == "recipe_step"]
     best = 0
     last_step_of: int | None = None
+    completed = False
     completed_other: list[str] = []
     for e in steps:
         step, of = _as_int(e.get("step")), _as_int(e.get("of"))
@@ -65,18 +69,18 @@ def check_recipe(goal: RecipeCompleted, events: list[dict[str, Any]]) -> Conditi
         if e.get("recipe_id") == goal.recipe_id:
             best = max(best, step)
             last_step_of = of
-            if step == of:
-                return ConditionResult(side="web", kind=goal.kind, description=_describe(goal), met=True,
-                                       detail={"recipe_id": goal.recipe_id, "step": step, "of": of})
+            completed = completed or step == of
         elif step == of:
             completed_other.append(str(e.get("recipe_id")))
     detail: dict[str, Any] = {"recipe_id": goal.recipe_id, "furthest_step": best, "of": last_step_of}
     note = None
     if completed_other:
-        # The reference counted any finished recipe; a look-alike recipe is a failure here.
+        # The reference counted any finished recipe; a look-alike recipe, or every recipe, is a failure here.
         detail["completed_other_recipes"] = sorted(set(completed_other))
-        note = "a different recipe was followed to its last step"
-    return ConditionResult(side="web", kind=goal.kind, description=_describe(goal), met=False, detail=detail, note=note)
+        note = ("other recipes were also followed to their last step: follow one recipe" if completed
+                else "a different recipe was followed to its last step")
+    return ConditionResult(side="web", kind=goal.kind, description=_describe(goal),
+                           met=completed and not completed_other, detail=detail, note=note)
 
 
 def check_order(goal: OrderPlaced, events: list[dict[str, Any]]) -> ConditionResult:

@@ -22,7 +22,9 @@ KITCHEN = EnvironmentSpec("kitchen", "embodied", f"{__name__}.env:KitchenEnviron
 
 DOMAINS = [
     Domain("cooking", (BROWSER, KITCHEN), generator=f"{__name__}.taskgen.cooking:generate",
-           goal_kinds=(*WEB_GOALS, "object_state", "object_in"),
+           goal_kinds=(*WEB_GOALS, "object_state", "object_in", "cooked_with", "holds_only"),
            checks={**WEB_CHECKS, "object_state": f"{__name__}.checks:object_state",
-                   "object_in": f"{__name__}.checks:object_in"}),
+                   "object_in": f"{__name__}.checks:object_in",
+                   "cooked_with": f"{__name__}.checks:cooked_with",
+                   "holds_only": f"{__name__}.checks:holds_only"}),
 ]

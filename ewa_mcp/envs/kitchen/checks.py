@@ -109,6 +109,11 @@ def goal_types(goals: list[Any]) -> set[str]:
             types.add(g.object_type)
         elif isinstance(g, ObjectIn):
             types.update((g.object_type, g.receptacle_type))
+        elif getattr(g, "kind", None) in ("cooked_with", "holds_only"):
+            # a food a negative condition names ("the tomato stays whole") is wanted: touching it is a
+            # goal failure, not instruction-action misalignment; the same for the dish's allowed foods
+            extra = [_field(g, "object_type"), _field(g, "receptacle_type"), *(_field(g, "allowed") or [])]
+            types.update(t for t in extra if isinstance(t, str))
     return types
 
 
@@ -144,3 +149,93 @@ def object_state(goal: ObjectState, ctx: CheckContext) -> ConditionResult:
 def object_in(goal: ObjectIn, ctx: CheckContext) -> ConditionResult:
     objects = _objects(goal, ctx)
     return objects if isinstance(objects, ConditionResult) else check_object_in(goal, objects)
+
+
+# ---------------------------------------------------------------- goals that tell a recipe apart (issue 26)
+# Heat sources a method goal can name. The instant CookObject is not one: it stays in the action space
+# (AI2-THOR's own action), but it cooks "somehow", so it never meets a goal that names how (docs/grading.md).
+COOK_METHODS = ("Pan", "Pot", "StoveBurner", "Microwave", "Toaster")
+FOOD_SOURCES = frozenset(("Apple", "Bread", "Egg", "Lettuce", "Potato", "Tomato"))
+
+
+def _field(goal: Any, name: str) -> Any:
+    return getattr(goal, name, None) if not isinstance(goal, dict) else goal.get(name)
+
+
+def _source(obj: Obj) -> str:
+    return str(obj.get("sourceType")) if is_piece(obj) else str(obj.get("objectType"))
+
+
+def check_cooked_with(goal: Any, objects: list[Obj]) -> ConditionResult:
+    """Some instance (or piece) of ``object_type`` was cooked by one of ``methods`` (the final state's
+    ``cookedBy``): fried in the pan means cooked in a Pan on a lit burner, toasted means in the Toaster."""
+    kind = str(_field(goal, "kind") or "cooked_with")
+    object_type, methods = _field(goal, "object_type"), _field(goal, "methods")
+    if not isinstance(object_type, str) or not isinstance(methods, list) or not methods \
+            or not all(isinstance(m, str) for m in methods):
+        return ConditionResult(side="embodied", kind=kind, description="cooked_with (malformed)", met=None,
+                               note="a cooked_with goal needs object_type (a type) and methods (a list of "
+                                    f"{', '.join(COOK_METHODS)})")
+    description = f"{object_type} cooked in {' or '.join(methods)}"
+    found = instances(objects, object_type)
+    if not found:
+        return ConditionResult(side="embodied", kind=kind, description=description, met=False,
+                               note=f"no {object_type} in the kitchen")
+    cooked = [o for o in found if o.get("isCooked") is True]
+    good = [o for o in cooked if o.get("cookedBy") in methods]
+    how = sorted({str(o.get("cookedBy", "unknown")) for o in cooked})
+    note = None
+    if cooked and not good:
+        note = (f"{object_type} is cooked, but by {', '.join(how)}, not in {' or '.join(methods)}"
+                + (" (the instant cook never meets a method goal)" if "CookObject" in how else ""))
+    return ConditionResult(side="embodied", kind=kind, description=description, met=bool(good),
+                           detail={"instances": len(found), "cooked_by": how}, note=note)
+
+
+def check_holds_only(goal: Any, objects: list[Obj]) -> ConditionResult:
+    """Nothing else on the plate: every ``receptacle_type`` that holds one of the ``allowed`` foods holds no
+    other food, and no receptacle of that type holds a food the agent sliced or cooked that is not allowed
+    (a second plate of extras does not hide them). Food counts by its source (a TomatoSliced is a Tomato)."""
+    kind = str(_field(goal, "kind") or "holds_only")
+    receptacle, allowed = _field(goal, "receptacle_type"), _field(goal, "allowed")
+    if not isinstance(receptacle, str) or not isinstance(allowed, list) or not all(isinstance(a, str) for a in allowed):
+        return ConditionResult(side="embodied", kind=kind, description="holds_only (malformed)", met=None,
+                               note="a holds_only goal needs receptacle_type (a type) and allowed (a list of food types)")
+    description = f"nothing but {', '.join(allowed) or 'nothing'} in/on {receptacle}"
+    by_id = {o["objectId"]: o for o in objects if isinstance(o.get("objectId"), str)}
+    contents: dict[str, list[Obj]] = {}
+    for o in objects:
+        if _source(o) not in FOOD_SOURCES:
+            continue
+        parents = [p for p in o.get("parentReceptacles") or [] if isinstance(p, str)]
+        ancestors = {a for p in parents for a in (by_id.get(p, {}).get("parentReceptacles") or []) if isinstance(a, str)}
+        for p in parents:
+            if p not in ancestors and by_id.get(p, {}).get("objectType", type_of_id(p)) == receptacle:
+                contents.setdefault(p, []).append(o)
+    extra: set[str] = set()
+    dish = 0
+    for held in contents.values():
+        sources = {_source(o) for o in held}
+        if sources & set(allowed):
+            dish += 1
+            extra |= sources - set(allowed)
+        else:
+            extra |= {_source(o) for o in held if is_piece(o) or o.get("isCooked") is True or o.get("isSliced") is True}
+    met = dish > 0 and not extra
+    note = None
+    if extra:
+        note = f"{receptacle} also holds {', '.join(sorted(extra))}, which the recipe does not put there"
+    elif not dish:
+        note = f"no {receptacle} holds {' or '.join(allowed)}"
+    return ConditionResult(side="embodied", kind=kind, description=description, met=met,
+                           detail={"receptacles": len(contents), "extra": sorted(extra)}, note=note)
+
+
+def cooked_with(goal: Any, ctx: CheckContext) -> ConditionResult:
+    objects = _objects(goal, ctx)
+    return objects if isinstance(objects, ConditionResult) else check_cooked_with(goal, objects)
+
+
+def holds_only(goal: Any, ctx: CheckContext) -> ConditionResult:
+    objects = _objects(goal, ctx)
+    return objects if isinstance(objects, ConditionResult) else check_holds_only(goal, objects)

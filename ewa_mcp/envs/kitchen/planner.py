@@ -41,6 +41,7 @@ COOK_METHODS = ("stove", "microwave", "toaster", "any")
 STOVE_VESSELS = ("Pan", "Pot")
 TOGGLEABLE = ("StoveKnob", "StoveBurner", "Microwave", "Toaster", "CoffeeMachine")
 OPENABLE = ("Fridge", "Microwave", "Cabinet", "Drawer")
+FOOD_OR_PIECE = frozenset(FOOD_TYPES) | frozenset(PIECE_OF)
 
 
 class PlanError(Exception):
@@ -117,11 +118,19 @@ class _Planner:
         self.session.reset()
         self.calls: list[dict[str, Any]] = []
         self.chosen: dict[str, str] = {}  # receptacle type -> objectId the plan keeps using (one bowl, one pan)
+        self.served: set[str] = set()  # what the plan itself put on a Plate or in a Bowl
+        self.dish_foods: dict[str, set[str]] = {}  # dish type -> the food types the ops put there
         items = [{"kitchen_type": t, "quantity": 1, "product_id": f"plan-{t}"} for t in delivered_types]
         if items:
             self.session.receive_deliveries([{"site": "shop", "type": "order_placed",
                                               "order": {"order_id": "plan", "fulfilment": "delivery",
                                                         "items": items}}])
+
+    def expect(self, ops: Sequence[_Op]) -> None:
+        """Know the whole plan's placements first: food already in a dish that the plan serves there stays."""
+        for op in ops:
+            if op.op == "put" and op.receptacle is not None:
+                self.dish_foods.setdefault(op.receptacle, set()).add(PIECE_OF.get(op.object, op.object))
 
     # -------------------------------------------------------------- primitives
     @property
@@ -223,6 +232,10 @@ class _Planner:
         if receptacle_type in ("Pan", "Pot"):  # one already on a burner saves two steps
             on_burner = [o for o in found if self.parent_type(o) == "StoveBurner"]
             found = on_burner or found
+        if receptacle_type in ("Plate", "Bowl"):  # serve on a clean dish: nothing else on the plate is a goal
+            empty = [o for o in found if not any(self.objects.get(i, {}).get("objectType") in FOOD_OR_PIECE
+                                                 for i in o.get("receptacleObjectIds") or [])]
+            found = empty or found
         self.chosen[receptacle_type] = found[0]["objectId"]
         return found[0]
 
@@ -338,8 +351,17 @@ class _Planner:
         item = self.ingredient(op.object, prefer_cooked=op.object in cooked or PIECE_OF.get(op.object) in cooked)
         if item["objectId"] == target_id:
             raise PlanError(f"cannot put {op.object} into itself")
+        if op.receptacle in ("Plate", "Bowl"):
+            # Clear what the kitchen left in the dish (an apple in the only bowl): nothing else on the plate.
+            for other in list(target.get("receptacleObjectIds") or []):
+                kind = self.objects.get(other, {}).get("objectType")
+                if kind in FOOD_OR_PIECE and other not in self.served \
+                        and PIECE_OF.get(kind, kind) not in self.dish_foods.get(op.receptacle, set()):
+                    self.hold(other)
+                    self.free_hand()
         self.hold(item["objectId"])
         self.put_into(target_id)
+        self.served.add(item["objectId"])
 
     def op_open(self, op: _Op, cooked: set[str]) -> None:
         target = self.instance(op.object)["objectId"]
@@ -376,6 +398,16 @@ class _Planner:
             self.call("kitchen_toggle", {"object": self.h(target), "state": "on"})
 
     def op_toggle_off(self, op: _Op, cooked: set[str]) -> None:
+        if op.object in ("StoveBurner", "StoveKnob"):
+            # "Turn off the stove": every burner the plan lit (a recipe may use the Pot and then the Pan),
+            # the remembered one last, so the op's own effect check reads the same knob as before.
+            remembered = self._switch_target(op.object)
+            for knob in [o for o in self.of_type("StoveKnob") if o["objectId"] != remembered] + \
+                    [self.objects[remembered]]:
+                if self.objects[knob["objectId"]]["isToggled"]:
+                    self.reach(knob["objectId"])
+                    self.call("kitchen_toggle", {"object": self.h(knob["objectId"]), "state": "off"})
+            return
         target = self._switch_target(op.object)
         if self.objects[target]["isToggled"]:
             self.reach(target)
@@ -412,6 +444,7 @@ def plan_ops(scene_name: str, ops: Sequence[dict[str, Any]], seed: int = 0,
     Raises ``PlanError`` when they cannot be carried out (a missing food or tool, a bad op)."""
     parsed = _parse_ops(ops)
     planner = _Planner(scene_name, seed, delivered_types)
+    planner.expect(parsed)
     cooked: set[str] = set()
     for op in parsed:
         planner.run(op, cooked)
@@ -443,6 +476,7 @@ def check_recipe_executable(scene_name: str, ops: Sequence[dict[str, Any]],
         return False, f"{scene} has no {', '.join(missing)} and it is not among the types that can be bought"
     try:
         planner = _Planner(scene, 0, deliveries)
+        planner.expect(parsed)
         cooked: set[str] = set()
         for op in parsed:
             planner.run(op, cooked)

@@ -93,6 +93,9 @@ class KitchenSession:
         self._pending_notes: list[str] = []
         self.last_report: ActionReport | None = None
         self._last_effects: list[str] = []
+        # objectId -> how it got cooked ("Pan", "Pot", "StoveBurner", "Microwave", "Toaster", or "CookObject" for
+        # the instant action): a method goal ("fried in the pan") reads it from the final state's cookedBy.
+        self.cooked_by: dict[str, str] = {}
 
     # ------------------------------------------------------------------ lifecycle
     def reset(self) -> None:
@@ -109,6 +112,7 @@ class KitchenSession:
         self.by_handle.clear()
         self._counters.clear()
         self.deliveries.clear()
+        self.cooked_by.clear()
         self._events_seen = 0
         self._pending_notes.clear()
         self.last_report = None
@@ -262,8 +266,31 @@ class KitchenSession:
             shown = f"{action} {self.handle(target)}" if target else action
             raise KitchenActionError(f"{shown} failed: {self._readable(str(metadata['errorMessage']))}")
         self._refresh(metadata)
+        self._note_cooking(action, before, self.objects)
         self._last_effects = self._effects(before, self.objects)
         return metadata
+
+    def _note_cooking(self, action: str, before: dict[str, dict[str, Any]], after: dict[str, dict[str, Any]]) -> None:
+        """Remember how each newly cooked object got cooked: by the instant CookObject, or by the heat source
+        it sits in (its Pan or Pot on a lit burner, the burner itself, the Microwave, the Toaster). Pieces cut
+        from a cooked object keep its method."""
+        inherited = next((self.cooked_by[i] for i in before if i not in after and i in self.cooked_by), None)
+        for object_id, obj in after.items():
+            if not obj.get("isCooked") or object_id in self.cooked_by:
+                continue
+            if object_id not in before:
+                if inherited is not None:
+                    self.cooked_by[object_id] = inherited
+                continue
+            if before[object_id].get("isCooked"):
+                continue
+            if action == "CookObject":
+                self.cooked_by[object_id] = "CookObject"
+                continue
+            parents = [after.get(p, {}).get("objectType", p.split("|", 1)[0])
+                       for p in obj.get("parentReceptacles") or [] if isinstance(p, str)]
+            source = next((t for t in ("Pan", "Pot", "Toaster", "Microwave", "StoveBurner") if t in parents), None)
+            self.cooked_by[object_id] = source or "other"
 
     def _effects(self, before: dict[str, dict[str, Any]], after: dict[str, dict[str, Any]]) -> list[str]:
         effects: list[str] = []
@@ -444,6 +471,8 @@ class KitchenSession:
         for obj in self.meta.get("objects", []):
             record = dict(obj)
             record["handle"] = self.handle(obj["objectId"])
+            if obj.get("isCooked") and obj["objectId"] in self.cooked_by:
+                record["cookedBy"] = self.cooked_by[obj["objectId"]]
             if obj["objectType"] in PIECE_OF:
                 record.setdefault("sourceType", PIECE_OF[obj["objectType"]])
             objects.append(record)

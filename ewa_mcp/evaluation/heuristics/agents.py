@@ -267,5 +267,115 @@ class FirstListedAgent:
         await finish(s, answer)
 
 
+# ------------------------------------------------------------------ cooking
+def dish_of(intent: str) -> str | None:
+    """The dish the intent names ("Cook <name>. ..."), as the recipe site spells it."""
+    from ...websites.recipes.catalog import load_catalog
+
+    names = sorted({r["name"] for r in load_catalog().recipes}, key=len, reverse=True)
+    return next((n for n in names if intent.startswith(f"Cook {n}.")), None)
+
+
+def missing_foods(intent: str) -> list[str]:
+    """The foods the intent says the kitchen lacks ("Your kitchen has no Egg and no Potato: ...")."""
+    m = re.search(r"Your kitchen has no (.+?): order", intent)
+    return [f.strip() for f in m.group(1).split(" and no ")] if m else []
+
+
+def same_named(name: str) -> list[dict[str, Any]]:
+    """The recipes the site lists for a search of the dish's name that carry exactly that name, in order."""
+    from ...websites.recipes.catalog import Filters, load_catalog
+
+    return [r for r in load_catalog().search(Filters(q=name)) if r["name"] == name]
+
+
+async def open_last_step(s: Session, recipe: dict[str, Any]) -> None:
+    await s.call("browser_goto", {"url": f"recipes:/?q={recipe['name']}"})
+    await s.call("browser_goto", {"url": f"recipes:/recipe/{recipe['id']}?step={len(recipe['steps'])}"})
+
+
+async def order_missing(s: Session, foods: list[str]) -> None:
+    """Order the foods the intent names as missing, for delivery (the shop's public pages)."""
+    from ...envs.kitchen.taskgen.cooking import buy_oracle, delivery_store
+    from ...websites.recipes.vocabulary import KITCHEN_PRODUCTS
+
+    products = [KITCHEN_PRODUCTS[f] for f in foods if f in KITCHEN_PRODUCTS]
+    if products and delivery_store(products) is not None:
+        for c in buy_oracle(products):
+            if s.ended:
+                return
+            await s.call(c.tool, c.args)
+
+
+async def enter_kitchen(s: Session) -> str | None:
+    """Switch to the kitchen; the scene its first observation names."""
+    seen = text_of(await s.call("switch_environment", {"target": "embodied", "message": "cook"}))
+    m = re.search(r"Kitchen (FloorPlan\d+)", seen)
+    return m.group(1) if m else None
+
+
+async def run_calls(s: Session, calls: list[dict[str, Any]]) -> None:
+    for c in calls:
+        if s.ended:
+            return
+        await s.call(c["tool"], c["args"])
+
+
+class CookEverythingAgent:
+    """Doing everything: open the last step of every recipe with the dish's name, order the missing foods,
+    then cut (crack) every food, cook every piece (bread in the toaster, the rest in the pan on a lit burner),
+    put a piece of each on one plate and turn the stove off. Never reads a constraint."""
+
+    name = "cook-everything"
+
+    async def play(self, s: Session) -> None:
+        from ...envs.kitchen.taskgen.outcomes import everything_ops, kitchen_calls, kitchen_foods
+
+        seen = visible(s)
+        intent = str(seen.get("intent", ""))
+        name = dish_of(intent) if seen.get("domain") == "cooking" else None
+        if name is None:
+            return await finish(s)
+        for recipe in same_named(name):
+            await open_last_step(s, recipe)
+        missing = missing_foods(intent)
+        await order_missing(s, missing)
+        scene = await enter_kitchen(s)
+        if scene is not None:
+            await run_calls(s, kitchen_calls(scene, everything_ops(kitchen_foods(scene, missing)), missing))
+        await finish(s)
+
+
+class LookAlikeAgent:
+    """Choosing by name: open the last step of every recipe the site lists with the dish's name (so the
+    recipe goal cannot tell), ignore the intent's constraints (diet, equipment, ingredients), and cook
+    exactly the first listed one's kitchen steps (the planner's calls) after ordering the missing foods.
+    Where the first listed recipe is the task's it does the task; where it is the look-alike, the kitchen
+    goals must fail."""
+
+    name = "look-alike"
+
+    async def play(self, s: Session) -> None:
+        from ...envs.kitchen.taskgen.outcomes import kitchen_calls
+        from ...envs.kitchen.taskgen.recipe_goals import recipe_ops
+
+        seen = visible(s)
+        intent = str(seen.get("intent", ""))
+        name = dish_of(intent) if seen.get("domain") == "cooking" else None
+        recipes = same_named(name) if name else []
+        if not recipes:
+            return await finish(s)
+        recipe = recipes[0]
+        for listed in recipes:
+            await open_last_step(s, listed)
+        missing = missing_foods(intent)
+        await order_missing(s, missing)
+        scene = await enter_kitchen(s)
+        if scene is not None:
+            await run_calls(s, kitchen_calls(scene, recipe_ops(recipe), missing))
+        await finish(s)
+
+
 HEURISTICS: dict[str, type] = {a.name: a for a in (PriorAgent, GeoLexicalAgent, WikiSearchAgent,
-                                                   OrderEverywhereAgent, FirstListedAgent)}
+                                                   OrderEverywhereAgent, FirstListedAgent, CookEverythingAgent,
+                                                   LookAlikeAgent)}

@@ -19,8 +19,8 @@ from ewa_mcp.core.taskmodel import KitchenStart, OrderPlaced, RecipeCompleted, S
 from ewa_mcp.websites.recipes.catalog import Filters, load_catalog
 from ewa_mcp.websites.shop import catalog as shop_catalog
 from ewa_mcp.websites.recipes.vocabulary import EQUIPMENT_WORDS, KITCHEN_PRODUCTS, required_equipment
-from ewa_mcp.taskgen.common import call, ref, rng_for, site_url, step_limit_for
-from .recipe_goals import FOODS, PIECE_SOURCE, goals_from_ops, recipe_ops
+from ewa_mcp.taskgen.common import call, ref, rng_for, site_url, step_budget
+from .recipe_goals import FOODS, PIECE_SOURCE, goals_from_ops, recipe_ops, rival_foods
 
 SCENES = [f"FloorPlan{i}" for i in range(1, 31)]
 TASKS_PER_RECIPE = 5  # cook and hard tasks of one recipe, together
@@ -29,7 +29,8 @@ SHOPPING_VARIANTS_TARGET = 40
 DIFFICULTY = {"cook": "easy", "buy": "medium", "hard": "hard"}
 # Every cooking intent says which parts of a recipe the kitchen goal leaves out (issue 16).
 KITCHEN_SCOPE = ("Only the kitchen steps count: steps and ingredients the recipe page marks as not in the "
-                 "kitchen are not part of the kitchen goal.")
+                 "kitchen are not part of the kitchen goal. Do what they say, the way they say it, and no more: "
+                 "food they do not cut or cook stays whole and raw, and a dish holds only what they put on it.")
 
 DIET_LABEL = {"vegetarian": "Vegetarian", "vegan": "Vegan", "non-vegetarian": "Non-vegetarian"}
 
@@ -163,6 +164,15 @@ def needed_foods(ops: list[dict[str, Any]]) -> set[str]:
     return {PIECE_SOURCE.get(op.get("object", ""), op.get("object", "")) for op in ops} & FOODS
 
 
+def kitchen_goals(recipe: dict[str, Any], scene: str, buy: list[str]) -> list[Any]:
+    """The recipe's kitchen goals in this kitchen: its outcome, and what tells it from its look-alikes and
+    from doing everything (a food only a look-alike uses, when this kitchen has it, stays whole and raw)."""
+    ops = recipe_ops(recipe)
+    rivals = [recipe_ops(r) for r in load_catalog().recipes if r["name"] == recipe["name"] and r["id"] != recipe["id"]]
+    present = scene_inventory(scene)["food"] | set(buy)
+    return goals_from_ops(ops, [f for f in rival_foods(ops, rivals) if f in present])
+
+
 def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str, Any], n: int,
               buy: list[str] | None = None, kind: str | None = None) -> Task | None:
     buy = list(buy or [])
@@ -202,9 +212,9 @@ def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str
         start=StartState(environment="web", web=WebStart(start_url="recipes:/"),
                          embodied=KitchenStart(scene=scene)),
         web_goals=web_goals,
-        embodied_goals=goals_from_ops(ops),
-        # Budget for an agent that reads every step (Next, Next, ...), which the oracle skips.
-        step_limit=step_limit_for(len(oracle) + len(recipe["steps"])),
+        embodied_goals=kitchen_goals(recipe, scene, buy),
+        # The budget leaves room for an agent that reads every step (Next, Next, ...), which the oracle skips.
+        step_limit=step_budget("cooking", DIFFICULTY[kind], len(oracle) + len(recipe["steps"])),
         oracle=oracle,
         metadata={"recipe_id": recipe["id"], "recipe_name": recipe["name"], "scene": scene,
                   "constraint": suffix or None, "pair_id": recipe.get("pair_id"),

@@ -12,7 +12,7 @@ from typing import Any
 from ..world import directions_via, get_world
 from ewa_mcp.core.taskmodel import DirectionsShown, PassedPlace, ReachedPlace, StartState, StreetStart, Task, WebStart
 from ewa_mcp.websites.map.places import WorldAdapter
-from ewa_mcp.taskgen.common import WALK_RULE, call, rng_for, site_url, step_limit_for
+from ewa_mcp.taskgen.common import WALK_RULE, call, rng_for, site_url, step_budget
 
 PER_CITY = {"manhattan": 44, "philadelphia": 36, "boston": 36, "pittsburgh": 36}
 # Hard tasks (via a waypoint) per city: 34 of 186 navigation tasks, 18 %.
@@ -138,7 +138,7 @@ def via_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any], 
                        DirectionsShown(origin=waypoint.id, destination=dest.id)],
             embodied_goals=[PassedPlace(city=city, node=waypoint.node, lat=way.lat, lng=way.lng, place_id=waypoint.id),
                             reached(world, city, dest)],
-            step_limit=step_limit_for(len(oracle), slack=30),
+            step_limit=step_budget("navigation", "hard", len(oracle)),
             oracle=oracle,
             metadata=metadata(world, origin, dest, route, waypoint_node=waypoint.node,
                               direct_route_m=direct.distance_m),
@@ -174,15 +174,16 @@ def generate() -> list[Task]:
                       call("switch_environment", target="embodied", message="walk the route"),
                       *walk_oracle(route.nodes), call("finish_episode")]
             task_rng = rng_for("navigation", city, made)
+            level = "easy" if turns(route) <= EASY_MAX_TURNS else "medium"
             tasks.append(Task(
                 id=f"navigation-{city}-{made:03d}",
                 domain="navigation",
-                difficulty="easy" if turns(route) <= EASY_MAX_TURNS else "medium",
+                difficulty=level,
                 intent=task_rng.choice(TEMPLATES).format(origin=o_text, destination=d_text),
                 start=start_state(world, city, origin, task_rng),
                 web_goals=[DirectionsShown(origin=origin.id, destination=dest.id)],
                 embodied_goals=[reached(world, city, dest)],
-                step_limit=step_limit_for(len(oracle), slack=30),
+                step_limit=step_budget("navigation", level, len(oracle)),
                 oracle=oracle,
                 metadata=metadata(world, origin, dest, route),
             ))

@@ -293,7 +293,7 @@ def _street(build: CityBuild, node: str) -> str:
 
 
 def make_task(p: Planned, city: str, source_name: str, world: Any, resolver: Any, report: ImportReport) -> dict:
-    from ewa_mcp.taskgen.common import call, rng_for, site_url, step_limit_for
+    from ewa_mcp.taskgen.common import call, rng_for, site_url, step_budget
     from ..taskgen.navigation import start_heading, walk_oracle
     from ewa_mcp.core.taskmodel import DirectionsShown, ReachedPlace, StartState, StreetStart, Task, WebStart
 
@@ -325,7 +325,7 @@ def make_task(p: Planned, city: str, source_name: str, world: Any, resolver: Any
         web_goals=[DirectionsShown(origin=start.id, destination=dest.id)],
         embodied_goals=[ReachedPlace(city=city, node=p.dest, lat=b.lat, lng=b.lng, radius_m=radius,
                                      place_id=dest.id)],
-        step_limit=step_limit_for(len(oracle), slack=30),
+        step_limit=step_budget("navigation", "imported", len(oracle)),
         oracle=oracle,
         metadata={"source": "imported", "release_file": source_name, "environment": p.env.label,
                   "original_source": p.env.source, "original_target": p.env.target,

@@ -10,7 +10,7 @@ from ..world import get_world
 from ewa_mcp.core.taskmodel import AnswerNumbers, OrderPlaced, ReachedPlace, StartState, StreetStart, Task, TextAnswer, WebStart
 from ewa_mcp.websites.shop import catalog
 from ewa_mcp.taskgen.answer_checks import CALORIES, answer_rule, committed_answer
-from ewa_mcp.taskgen.common import WALK_RULE, call, ref, rng_for, site_url, step_limit_for
+from ewa_mcp.taskgen.common import WALK_RULE, call, ref, rng_for, site_url, step_budget
 
 PER_TEMPLATE = 60
 MAX_WALK_M = 2200.0
@@ -147,7 +147,7 @@ def _task(ctx: Context, tid: str, intent: str, start: Any, product: Any, size: s
         embodied_goals=[ReachedPlace(city="manhattan", node=place.node, lat=node.lat, lng=node.lng,
                                      place_id=store_id, must_match_order_store=True)],
         answer=answer,
-        step_limit=step_limit_for(len(oracle), slack=30),
+        step_limit=step_budget("shopping", difficulty, len(oracle)),
         oracle=oracle,
         metadata={"store_nodes": {sid: p.node for sid, p in ctx.store_places.items()},
                   "shortest_path_m": route.distance_m, "start_lat": ctx.world.node(start.node).lat,
@@ -424,7 +424,7 @@ def pair_tasks(ctx: Context) -> list[Task]:
                        OrderPlaced(product_id=b.id, size=size_b, quantity=1, store_id=store_b)],
             embodied_goals=[ReachedPlace(city="manhattan", node=place.node, lat=node.lat, lng=node.lng,
                                          place_id=near)],
-            step_limit=step_limit_for(len(oracle), slack=40),
+            step_limit=step_budget("shopping", "hard", len(oracle)),
             oracle=oracle,
             metadata={"store_nodes": {sid: p.node for sid, p in ctx.store_places.items()},
                       "shortest_path_m": route.distance_m, "start_lat": ctx.world.node(start.node).lat,

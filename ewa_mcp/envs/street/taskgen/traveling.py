@@ -13,7 +13,7 @@ from ..world import get_world
 from ewa_mcp.core.taskmodel import PageVisited, ReachedPlace, StartState, StreetStart, Task, WebStart
 from ewa_mcp.websites.wiki import store as wiki
 from ewa_mcp.taskgen.answer_checks import METRES, YEARS, answer_rule, committed_answer
-from ewa_mcp.taskgen.common import WALK_RULE, call, rng_for, site_url, step_limit_for
+from ewa_mcp.taskgen.common import WALK_RULE, call, rng_for, site_url, step_budget
 
 TARGET = 130
 HARD_TARGET = 30  # landmarks described only by their look (>= 15 % of the domain)
@@ -208,7 +208,7 @@ def landmark_task(world: Any, tid: str, target: Any, article: Any, question_key:
         embodied_goals=[ReachedPlace(city=target.city, node=target.node, lat=end.lat, lng=end.lng,
                                      place_id=target.id)],
         answer=answer_check(question_key, answer),
-        step_limit=step_limit_for(len(oracle), slack=60 if hard else 30),
+        step_limit=step_budget("traveling", "hard" if hard else "medium", len(oracle)),
         oracle=oracle,
         metadata={"poi_id": target.id, "article": article.slug, "question": question_key,
                   "shortest_path_m": route.distance_m, "start_lat": world.node(start.node).lat,

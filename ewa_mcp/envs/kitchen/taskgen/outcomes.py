@@ -1,0 +1,173 @@
+"""Kitchen outcomes a task's goals are audited against (issue 26, docs/verified.md).
+
+Each outcome is the final state of a real ``KitchenSession`` over the built-in simulator, reached by the
+recipe planner (``planner.py``) from the task's kitchen and deliveries:
+
+* ``recipe_outcome`` — a recipe's kitchen steps done perfectly (the oracle's, or its look-alike's);
+* ``everything_outcome`` — doing everything: every food cut (the egg cracked), every piece cooked the
+  usual way (bread in the toaster, the rest in the pan on a lit burner), a piece of each on one plate,
+  the stove off.
+
+``grade_kitchen`` checks a task's kitchen goals against such a state with the grader's own checks.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+from ewa_mcp.core.taskmodel import ObjectIn, ObjectState
+from ewa_mcp.graders.models import ConditionResult
+from .. import checks
+from ..planner import PlanError, _parse_ops, _Planner
+from ..vocabulary import PIECE_FOR
+from .recipe_goals import FOODS
+
+
+def _planned(scene: str, ops: list[dict[str, Any]], delivered: list[str], stop_on_error: bool) -> Any:
+    """The planner after carrying out ``ops`` (None when the kitchen cannot be set up, or an op fails and
+    ``stop_on_error``); otherwise a failed op is skipped and the rest go on."""
+    try:
+        planner = _Planner(scene, 0, delivered)
+    except PlanError:
+        return None
+    planner.expect(_parse_ops(ops))
+    cooked: set[str] = set()
+    for op in ops:
+        try:
+            planner.run(_parse_ops([op])[0], cooked)
+        except PlanError:
+            if stop_on_error:
+                return None
+    return planner
+
+
+def _run(scene: str, ops: list[dict[str, Any]], delivered: list[str], stop_on_error: bool) -> dict[str, Any] | None:
+    planner = _planned(scene, ops, delivered, stop_on_error)
+    return None if planner is None else planner.session.final_state()
+
+
+def kitchen_calls(scene: str, ops: list[dict[str, Any]], delivered: Sequence[str] = ()) -> list[dict[str, Any]]:
+    """The kitchen tool calls that carry out as many of ``ops`` as this kitchen allows (heuristic agents)."""
+    planner = _planned(scene, list(ops), list(delivered), stop_on_error=False)
+    return [] if planner is None else list(planner.calls)
+
+
+def kitchen_foods(scene: str, delivered: Sequence[str] = ()) -> list[str]:
+    """The food types a kitchen holds at the start, with the delivered ones."""
+    try:
+        planner = _Planner(scene, 0, list(delivered))
+    except PlanError:
+        return []
+    return sorted({o["objectType"] for o in planner.objects.values()} & FOODS)
+
+
+def recipe_outcome(scene: str, ops: list[dict[str, Any]], delivered: Sequence[str] = ()) -> dict[str, Any] | None:
+    """The final state after a recipe's ops done perfectly, or None when they cannot be done here."""
+    return _run(scene, list(ops), list(delivered), stop_on_error=True)
+
+
+def everything_ops(foods: list[str]) -> list[dict[str, Any]]:
+    """Cut, cook and plate every food: what an agent does that covers every recipe at once."""
+    ops: list[dict[str, Any]] = []
+    for food in sorted(foods):
+        piece = PIECE_FOR[food]
+        ops.append({"op": "crack" if food == "Egg" else "slice", "object": food})
+        ops.append({"op": "cook", "object": piece, "method": "toaster"} if food == "Bread"
+                   else {"op": "cook", "object": piece, "method": "stove", "vessel": "Pan"})
+        ops.append({"op": "put", "object": piece, "receptacle": "Plate"})
+    ops.append({"op": "toggle_off", "object": "StoveBurner"})
+    return ops
+
+
+def everything_outcome(scene: str, delivered: Sequence[str] = ()) -> dict[str, Any] | None:
+    """The final state after doing everything to every food in the kitchen (and the delivered ones)."""
+    return _run(scene, everything_ops(kitchen_foods(scene, delivered)), list(delivered), stop_on_error=False)
+
+
+def grade_kitchen(goals: list[Any], state: dict[str, Any]) -> list[ConditionResult]:
+    """Each kitchen goal checked against ``state`` by the grader's check for its kind."""
+    objects = state["objects"]
+    results: list[ConditionResult] = []
+    for goal in goals:
+        if isinstance(goal, ObjectState):
+            results.append(checks.check_object_state(goal, objects))
+        elif isinstance(goal, ObjectIn):
+            results.append(checks.check_object_in(goal, objects))
+        elif goal.kind == "cooked_with":
+            results.append(checks.check_cooked_with(goal, objects))
+        elif goal.kind == "holds_only":
+            results.append(checks.check_holds_only(goal, objects))
+        else:
+            raise ValueError(f"no kitchen check for goal kind {goal.kind!r}")
+    return results
+
+
+def audit(tasks: list[Any], fresh_goals: bool = False) -> dict[str, Any]:
+    """For each cooking task: does the oracle's outcome meet every kitchen goal, and do the look-alike's
+    and doing everything fail at least one? ``fresh_goals`` grades the goals the generator would write now
+    instead of the task file's."""
+    from ewa_mcp.websites.recipes.catalog import load_catalog
+
+    from .cooking import kitchen_goals
+    from .recipe_goals import recipe_ops
+
+    catalog = load_catalog()
+    by_id = {r["id"]: r for r in catalog.recipes}
+    counts: dict[str, Any] = {"tasks": 0, "oracle_fails": [], "lookalike_tasks": 0, "lookalike_passes": [], "lookalike_not_doable": 0,
+              "lookalike_same_kitchen": 0,
+              "everything_passes": []}
+    for task in tasks:
+        meta = task.metadata
+        recipe = by_id[meta["recipe_id"]]
+        buy = meta.get("buy") or []
+        delivered = [buy] if isinstance(buy, str) else list(buy)
+        scene = task.start.embodied.scene
+        goals = kitchen_goals(recipe, scene, delivered) if fresh_goals else task.embodied_goals
+        counts["tasks"] += 1
+        own = recipe_outcome(scene, recipe_ops(recipe), delivered)
+        if own is None or not all(r.met for r in grade_kitchen(goals, own)):
+            counts["oracle_fails"].append(task.id)
+        for other in catalog.recipes:
+            if other["name"] != recipe["name"] or other["id"] == recipe["id"]:
+                continue
+            counts["lookalike_tasks"] += 1
+            if recipe_ops(other) == recipe_ops(recipe):
+                # told apart only outside the kitchen (honey or cinnamon): the web goal's job
+                counts["lookalike_same_kitchen"] += 1
+                continue
+            state = recipe_outcome(scene, recipe_ops(other), delivered)
+            if state is None:
+                counts["lookalike_not_doable"] += 1
+            elif all(r.met for r in grade_kitchen(goals, state)):
+                counts["lookalike_passes"].append(f"{task.id} ({recipe['id']} vs {other['id']})")
+        everything = everything_outcome(scene, delivered)
+        if everything is not None and all(r.met for r in grade_kitchen(goals, everything)):
+            counts["everything_passes"].append(task.id)
+    return counts
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Print the audit over the cooking tasks (``python -m ewa_mcp.envs.kitchen.taskgen.outcomes [--fresh]
+    [--sample N]``)."""
+    import argparse
+
+    from ewa_mcp.core.paths import tasks_dir
+    from ewa_mcp.core.taskmodel import TaskStore
+
+    parser = argparse.ArgumentParser(description=main.__doc__)
+    parser.add_argument("--fresh", action="store_true", help="grade the goals the generator writes now")
+    parser.add_argument("--sample", type=int, default=0, help="every n-th task only (0: all)")
+    args = parser.parse_args(argv)
+    tasks = sorted((t for t in TaskStore([tasks_dir()]).all() if t.domain == "cooking"), key=lambda t: t.id)
+    if args.sample:
+        tasks = tasks[::args.sample]
+    counts = audit(tasks, fresh_goals=args.fresh)
+    for key, value in counts.items():
+        shown = f"{len(value)}  e.g. {value[:5]}" if isinstance(value, list) else value
+        print(f"{key:22} {shown}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
