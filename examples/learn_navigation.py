@@ -12,8 +12,8 @@ no start and goal walk with it.
 The policy sees what a walker holding the directions would know: how far the destination is (five distance
 bands) and, for each street it can take, the angle between that street and the bearing to the destination (eight
 bands of 22.5 degrees). The destination's coordinates come from the task's goal (what the directions would show);
-the walker knows where it is by counting its own moves from the start. It is a table of preferences, one per
-(distance band, angle band) and one for stopping per distance band, turned into a softmax over the moves on offer
+the walker knows where it is by counting its own moves from the start. It is two tables of preferences, one per angle
+band for taking a street and one per distance band for stopping, turned into a softmax over the moves on offer
 and ``street_stop``. It starts at zero (every choice equally likely) and learns by REINFORCE from the
 environment's reward alone: 1.0 when the grader judges the finished episode a success, else 0.0. Nothing else
 tells it which move is better.
@@ -84,13 +84,15 @@ def angle_band(heading: float, bearing: float) -> int:
 
 class TabularPolicy:
     def __init__(self, rng: np.random.Generator):
-        self.move = np.zeros((len(DISTANCE_BANDS) + 1, ANGLE_BANDS))
+        # Moving is judged by its angle alone, the same at every distance, so what the short walks of the
+        # curriculum teach carries over to long ones; stopping is judged by the distance.
+        self.move = np.zeros(ANGLE_BANDS)
         self.stop = np.zeros(len(DISTANCE_BANDS) + 1)
         self.rng = rng
 
     def choose(self, d: int, angles: list[int], greedy: bool = False) -> tuple[int, np.ndarray]:
         """Index of the choice (len(angles) = stop) and the softmax over the choices."""
-        logits = np.array([self.move[d, a] for a in angles] + [self.stop[d]])
+        logits = np.array([self.move[a] for a in angles] + [self.stop[d]])
         p = np.exp(logits - logits.max())
         p /= p.sum()
         return (int(p.argmax()) if greedy else int(self.rng.choice(len(p), p=p))), p
@@ -132,7 +134,7 @@ def reinforce(policy: TabularPolicy, trace: list[Any], advantage: float, lr: flo
         grad = -p
         grad[choice] += 1.0  # d log softmax / d logits
         for k, a in enumerate(angles):
-            policy.move[d, a] += lr * advantage * grad[k]
+            policy.move[a] += lr * advantage * grad[k]
         policy.stop[d] += lr * advantage * grad[-1]
 
 
