@@ -20,7 +20,7 @@ browser), the shape of an RL rollout worker's traffic. Prints one JSON object:
 - ``load_average``: the 1-minute load average at the start, its peak and the end; the machine's core count.
 
     .venv/bin/python benchmarks/bench_load.py [--kitchen 128] [--street 128] [--web 0] [--steps 20] [--rounds 1]
-        [--max-episodes N]
+        [--think-s S] [--max-episodes N]
 """
 
 from __future__ import annotations
@@ -129,7 +129,7 @@ async def call(client: Any, stats: Stats, kind: str, tool: str, args: dict[str, 
 
 
 async def client_loop(url: str, kind: str, tasks: list[Task], index: int, rounds: int, steps: int,
-                      stats: Stats, gate: asyncio.Event) -> None:
+                      stats: Stats, gate: asyncio.Event, think_s: float = 0.0) -> None:
     http = create_mcp_http_client()  # 30 s to connect and write, 300 s to read: the SDK's defaults
     try:
         async with http, Client(streamable_http_client(url, http_client=http)) as client:
@@ -142,6 +142,7 @@ async def client_loop(url: str, kind: str, tasks: list[Task], index: int, rounds
                 episode = started.structured_content["episode_id"]
                 body = [s for s in task.oracle if s.tool != "finish_episode"][:steps]
                 for step in body:
+                    await asyncio.sleep(think_s)
                     await call(client, stats, kind, step.tool, {"episode_id": episode, **dict(step.args)})
                 await call(client, stats, kind, "finish_episode", {"episode_id": episode})
                 stats.episodes += 1
@@ -186,7 +187,7 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
         memory = {"start": tree_pss_mb(server.pid), "peak": 0.0}
         load = {"start": round(os.getloadavg()[0], 2), "peak": 0.0}
         gate = asyncio.Event()
-        clients = [client_loop(url, kind, by_kind[kind], i, args.rounds, args.steps, stats, gate)
+        clients = [client_loop(url, kind, by_kind[kind], i, args.rounds, args.steps, stats, gate, args.think_s)
                    for kind, n in counts.items() for i in range(n)]
 
         async def sample() -> None:
@@ -233,6 +234,8 @@ def main() -> None:
     ap.add_argument("--steps", type=int, default=20, help="calls per episode besides start and finish (at most "
                     "the oracle's)")
     ap.add_argument("--rounds", type=int, default=1, help="episodes each client plays one after the other")
+    ap.add_argument("--think-s", type=float, default=0.0, help="seconds each client waits before each call, as "
+                    "an agent thinks")
     ap.add_argument("--max-episodes", type=int, default=512, help="the server's admission cap (EWA_MAX_EPISODES)")
     args = ap.parse_args()
     print(json.dumps(asyncio.run(run(args)), indent=1))
