@@ -208,14 +208,9 @@ class EwaEnv(gym.Env[str, dict[str, Any]]):
         self.episode_options = {**(episode_options or {}), "observation": observation}
         self._init_args = dict(domain=domain, tasks=tasks, reward=reward, observation=observation,
                                episode_options=episode_options)
-        if _runtime is None:
-            _runtime = _Runtime([Path(d) for d in task_dirs] if task_dirs else None,
-                                Path(run_dir) if run_dir else None, settings)
-        self._runtime = _runtime
-        _runtime.users += 1
-        self._finalizer = weakref.finalize(self, _release, _runtime)
         if split != "test" or split_seed:
             # A fresh split (ewa_mcp/taskgen/splits.py): its tasks join the store and are the only ones drawn.
+            # Drawn before the server starts, so a refused split leaves nothing running.
             from .taskgen.splits import generate_split
 
             if domain == SUITE:
@@ -224,6 +219,12 @@ class EwaEnv(gym.Env[str, dict[str, Any]]):
             extra_tasks = [*(extra_tasks or ()), *drawn]
             tasks = tasks or [t.id for t in drawn]
             self._init_args["tasks"] = tasks  # a fork draws from the same tasks
+        if _runtime is None:
+            _runtime = _Runtime([Path(d) for d in task_dirs] if task_dirs else None,
+                                Path(run_dir) if run_dir else None, settings)
+        self._runtime = _runtime
+        _runtime.users += 1
+        self._finalizer = weakref.finalize(self, _release, _runtime)
         for task in extra_tasks or ():
             _runtime.episodes.tasks.add(task)
         self.task_ids = self._select_tasks(tasks)

@@ -117,3 +117,20 @@ def test_cli_generates_a_train_split_that_eval_can_play(tmp_path):
     assert len(episodes) == 1
     assert json.loads((episodes[0] / "task.json").read_text())["id"] == first
     assert grade_episode(episodes[0]).overall_success is True
+
+
+def test_the_gym_draws_only_the_split_it_is_given(tmp_path, navigation_train):
+    import gymnasium
+
+    import ewa_mcp.gym  # noqa: F401  (registers the environments)
+
+    env = gymnasium.make("ewa_mcp/navigation-v0", split="train", split_seed=5, run_dir=tmp_path)
+    try:
+        u = env.unwrapped
+        assert u.task_ids == sorted(t.id for t in navigation_train)
+        _, info = env.reset(seed=3)
+        assert info["task_id"].startswith("navigation-train5-")
+    finally:
+        env.close()
+    with pytest.raises(ValueError, match="the train split exists for cooking, navigation only"):
+        gymnasium.make("ewa_mcp/geolocation-v0", split="train", split_seed=1, run_dir=tmp_path)
