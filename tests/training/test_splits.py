@@ -134,3 +134,13 @@ def test_the_gym_draws_only_the_split_it_is_given(tmp_path, navigation_train):
         env.close()
     with pytest.raises(ValueError, match="the train split exists for cooking, navigation only"):
         gymnasium.make("ewa_mcp/geolocation-v0", split="train", split_seed=1, run_dir=tmp_path)
+
+
+def test_the_test_split_is_the_shipped_suite_unchanged():
+    drawn = generate_split("navigation", "test", 0, cities=["boston"])
+    shipped = sorted((t for t in public_test_tasks("navigation") if t.id.startswith(("navigation-boston-",
+                                                                                      "navigation-via-boston-"))),
+                     key=lambda t: t.id)
+    assert len(shipped) == 36 + 8  # PER_CITY and PER_CITY_VIA for Boston
+    assert [t.model_dump(mode="json") for t in sorted(drawn, key=lambda t: t.id)] == \
+        [t.model_dump(mode="json") for t in shipped]
