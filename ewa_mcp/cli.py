@@ -111,6 +111,13 @@ def cmd_sites(args: argparse.Namespace) -> int:
     return 0
 
 
+def _add_split_arguments(p: argparse.ArgumentParser, prefix: str) -> None:
+    p.add_argument("--split", choices=["test", "train", "hidden"], default="test",
+                   help=prefix + "test is the public suite; train and hidden are drawn fresh with --seed and share "
+                   "no instance with it (navigation and cooking; docs/training.md)")
+    p.add_argument("--seed", type=int, default=0, metavar="N", help=prefix + "the seed of a train or hidden split")
+
+
 def cmd_tasks(args: argparse.Namespace) -> int:
     from .core.paths import generated_tasks_dir
     from .core.taskmodel import TaskStore, export_json_schema
@@ -132,10 +139,18 @@ def cmd_tasks(args: argparse.Namespace) -> int:
         print(f"error: tasks {args.action} takes no PATH arguments", file=sys.stderr)
         return 2
     if args.action == "generate":
-        from .taskgen import generate_all
+        from .taskgen.splits import write_split
 
         out = Path(args.output) if args.output else generated_tasks_dir()
-        generated = generate_all(out, domains=args.domain)
+        if args.split != "test" and not args.output:
+            print(f"error: --split {args.split} needs -o DIR: the default directory holds the public test split",
+                  file=sys.stderr)
+            return 2
+        try:
+            generated = write_split(out, args.split, args.seed, domains=args.domain)
+        except ValueError as exc:
+            print(f"error: {exc}", file=sys.stderr)
+            return 2
         print(json.dumps(generated))
         print(f"wrote {out}" + ("" if args.output or out != Path.cwd() / "tasks" else
                                 "; use it with --tasks-dir ./tasks or EWA_TASKS_DIR=./tasks"), file=sys.stderr)
@@ -178,6 +193,30 @@ def cmd_tasks(args: argparse.Namespace) -> int:
     return 0
 
 
+def _split_task_dirs(args: argparse.Namespace) -> list[Path] | None:
+    """eval --split train|hidden --seed N: the split's tasks, generated into a directory that lives as long as
+    this process (worker processes read it too)."""
+    import atexit
+    import shutil
+    import tempfile
+
+    from .taskgen.splits import write_split
+
+    if args.tasks_dir:
+        print("error: --split draws its own tasks; leave out --tasks-dir (or generate the split with "
+              "`ewa-mcp tasks generate --split ... -o DIR` and pass --tasks-dir DIR)", file=sys.stderr)
+        return None
+    out = Path(tempfile.mkdtemp(prefix=f"ewa-{args.split}{args.seed}-"))
+    atexit.register(shutil.rmtree, out, True)
+    try:
+        counts = write_split(out, args.split, args.seed, domains=args.domain)
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return None
+    print(f"{args.split} split, seed {args.seed}: {json.dumps(counts)} tasks", file=sys.stderr)
+    return [out]
+
+
 def cmd_eval(args: argparse.Namespace) -> int:
     from .evaluation.agents import NoopAgent, OracleAgent, RandomAgent, ReplayAgent, ReplayError, load_replay
     from .evaluation.heuristics import heuristic_agent
@@ -188,6 +227,11 @@ def cmd_eval(args: argparse.Namespace) -> int:
     if _task_dirs_or_error(args.tasks_dir) is None:
         return 2
     task_dirs = task_dirs_from(args.tasks_dir)
+    if args.split != "test" or args.seed:
+        split_dirs = _split_task_dirs(args)
+        if split_dirs is None:
+            return 2
+        task_dirs = split_dirs
     try:
         if args.agent == "replay":
             if not args.replay:
@@ -240,6 +284,11 @@ def cmd_play(args: argparse.Namespace) -> int:
     if _task_dirs_or_error(args.tasks_dir) is None:
         return 2
     task_dirs = task_dirs_from(args.tasks_dir)
+    if args.split != "test" or args.seed:
+        split_dirs = _split_task_dirs(args)
+        if split_dirs is None:
+            return 2
+        task_dirs = split_dirs
     task = TaskStore(task_dirs).get(args.task_id)
     if task is None:
         print(f"error: unknown task id {args.task_id!r}; see `ewa-mcp tasks list`", file=sys.stderr)
@@ -321,6 +370,7 @@ def build_parser() -> argparse.ArgumentParser:
                    "import-ewa, default ~/.local/share/ewa-mcp/imported)")
     p.add_argument("--annotations", metavar="FILE", help="import-ewa: the release's annotation file (default: the "
                    "navi_anno*.json beside PATH; 'none' to ignore it)")
+    _add_split_arguments(p, "generate: ")
     p.set_defaults(func=cmd_tasks)
 
     p = sub.add_parser("eval", help="run an agent over tasks through the MCP server, then grade the run")
@@ -334,6 +384,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--sample", type=int, metavar="N", help="N tasks per domain, chosen deterministically")
     p.add_argument("--observation", choices=["text", "vision", "both"],
                    help="the episodes' observation mode (start_episode option; default: the server's, text)")
+    _add_split_arguments(p, "")
     add_scale_arguments(p)
     p.add_argument("--transport", choices=["inprocess", "stdio", "http"], default="inprocess")
     p.add_argument("--run-dir", metavar="DIR")

@@ -193,7 +193,8 @@ class EwaEnv(gym.Env[str, dict[str, Any]]):
     def __init__(self, domain: str = SUITE, *, tasks: list[str] | None = None, extra_tasks: list[Task] | None = None,
                  reward: RewardMode = "sparse", observation: Literal["text", "vision", "both"] = "text",
                  episode_options: dict[str, Any] | None = None, task_dirs: list[str | Path] | None = None,
-                 run_dir: str | Path | None = None, settings: Any = None, _runtime: _Runtime | None = None):
+                 run_dir: str | Path | None = None, settings: Any = None, split: str = "test", split_seed: int = 0,
+                 _runtime: _Runtime | None = None):
         known = registry.domain_names()
         if domain != SUITE and domain not in known:
             raise ValueError(f"unknown domain {domain!r}; use one of {', '.join([*known, SUITE])}")
@@ -207,6 +208,17 @@ class EwaEnv(gym.Env[str, dict[str, Any]]):
         self.episode_options = {**(episode_options or {}), "observation": observation}
         self._init_args = dict(domain=domain, tasks=tasks, reward=reward, observation=observation,
                                episode_options=episode_options)
+        if split != "test" or split_seed:
+            # A fresh split (ewa_mcp/taskgen/splits.py): its tasks join the store and are the only ones drawn.
+            # Drawn before the server starts, so a refused split leaves nothing running.
+            from .taskgen.splits import generate_split
+
+            if domain == SUITE:
+                raise ValueError(f"split={split!r} needs one domain (navigation or cooking), not the suite")
+            drawn = generate_split(domain, split, split_seed)
+            extra_tasks = [*(extra_tasks or ()), *drawn]
+            tasks = tasks or [t.id for t in drawn]
+            self._init_args["tasks"] = tasks  # a fork draws from the same tasks
         if _runtime is None:
             _runtime = _Runtime([Path(d) for d in task_dirs] if task_dirs else None,
                                 Path(run_dir) if run_dir else None, settings)

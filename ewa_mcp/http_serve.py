@@ -193,6 +193,9 @@ class BearerTokenGuard:
         await send({"type": "http.response.body", "body": body})
 
 
+KEEP_ALIVE_S = 120
+
+
 def serve_http(mcp: Any, settings: Settings) -> int:
     """Run the streamable HTTP app on ``settings.host``/``port`` until interrupted; 2 for a refused configuration."""
     import anyio
@@ -228,6 +231,10 @@ def serve_http(mcp: Any, settings: Settings) -> int:
                   f"{TOKEN_ENV} ('Authorization: Bearer <token>')", file=sys.stderr)
     app = HostOriginGuard(app, hosts)  # outermost: a request from a rebound name is refused before anything else
     print(f"MCP endpoint: http://{host}:{port}/mcp", file=sys.stderr)
-    config = uvicorn.Config(app, host=host, port=port, log_level="warning")
+    # uvicorn closes a connection idle for 5 s by default. A client that sends its next call just as that close
+    # is under way gets a reset connection (a ReadError that ends its MCP session): under load (256 sessions on
+    # 2 cores, benchmarks/bench_load.py) one in five sessions died that way. Agents often think longer than 5 s
+    # between calls, so connections are kept for as long as a slow turn takes.
+    config = uvicorn.Config(app, host=host, port=port, log_level="warning", timeout_keep_alive=KEEP_ALIVE_S)
     anyio.run(uvicorn.Server(config).serve)
     return 0

@@ -4,15 +4,24 @@ from __future__ import annotations
 
 import hashlib
 import random
+from contextvars import ContextVar
 from typing import Any
 from urllib.parse import urlencode
 
 from ewa_mcp.core.taskmodel import ToolCall
 
 
+# The split being generated ("" for the public test split). Every generator draws through rng_for, so a salt
+# set here (ewa_mcp/taskgen/splits.py) redraws every choice of an unchanged generator, and the public suite,
+# generated without one, stays byte for byte what it was.
+SPLIT_SALT: ContextVar[str] = ContextVar("ewa_split_salt", default="")
+
+
 def rng_for(*parts: Any) -> random.Random:
-    """A random stream that depends only on its parts (stable across runs and Python versions)."""
-    digest = hashlib.sha256(":".join(map(str, parts)).encode()).digest()
+    """A random stream that depends only on its parts and the split being generated (stable across runs and
+    Python versions)."""
+    salt = SPLIT_SALT.get()
+    digest = hashlib.sha256(":".join(map(str, (salt, *parts) if salt else parts)).encode()).digest()
     return random.Random(int.from_bytes(digest[:8], "big"))
 
 

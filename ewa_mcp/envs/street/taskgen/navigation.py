@@ -146,11 +146,17 @@ def via_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any], 
     return tasks
 
 
-def generate() -> list[Task]:
+def generate(cities: list[str] | None = None) -> list[Task]:
+    """The navigation tasks of every city, or of ``cities`` only (a quicker draw of a training split)."""
+    unknown = sorted(set(cities or ()) - set(PER_CITY))
+    if unknown:
+        raise ValueError(f"unknown cities {unknown}; choose from {sorted(PER_CITY)}")
     world = get_world()
     resolver = WorldAdapter(world)
     tasks: list[Task] = []
     for city, count in PER_CITY.items():
+        if cities and city not in cities:
+            continue
         rng = rng_for("navigation", city)
         places = candidate_places(world, city, rng)
         made, tries = 0, 0
