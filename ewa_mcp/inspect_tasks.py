@@ -194,36 +194,52 @@ async def _status(client: Client, episode_id: str) -> str:
         return "unknown"
 
 
-# ---------------------------------------------------------------- solver
+# ---------------------------------------------------------------- setup and solver
 @solver
-def ewa_agent(run_dir: str, task_dirs: list[str], observation: str = "text", max_turns: int | None = None):
-    """Plays one episode per sample through the real MCP server's tools until it ends or turns run out."""
+def ewa_episode(run_dir: str, task_dirs: list[str], observation: str = "text"):
+    """The task's setup (Inspect's ``Task.setup``, kept when ``--solver`` replaces the agent): starts the sample's
+    episode on the real MCP server and hands the agent that episode's tools with ``episode_id`` bound (the
+    control plane stays with the harness), the system prompt, and the task with its first observation. Any
+    Inspect solver or agent then plays with ``state.tools`` and ``state.messages``."""
 
     async def solve(state: TaskState, generate: Generate) -> TaskState:
         server = await _Server.get(Path(run_dir), [Path(d) for d in task_dirs])
         async with Client(server.url) as client:
             start = await client.call_tool("start_episode", {"task_id": str(state.sample_id),
                                                              "options": {"observation": observation}})
-            if start.is_error:
-                raise EvalError("start_episode failed: " + " ".join(getattr(c, "text", "") for c in start.content))
-            episode_id = start.structured_content["episode_id"]
-            state.metadata["episode_id"] = episode_id
-            state.metadata["run_dir"] = run_dir
-            state.metadata["server_url"] = server.url
-            mcp = mcp_server_http(name="ewa-mcp", url=server.url, timeout=60)
-            tools = [_bind_episode(t, episode_id) for t in await mcp_tools(mcp).tools()
-                     if ToolDef(t).name not in HIDDEN_TOOLS]
-            state.messages = [ChatMessageSystem(content=SYSTEM_PROMPT),
-                              _first_message(str(state.sample_id), start, observation != "text")]
-            state.tools = tools
-            model = offline_token_counts(get_model())
-            nudged = False
+        if start.is_error:
+            raise EvalError("start_episode failed: " + " ".join(getattr(c, "text", "") for c in start.content))
+        episode_id = start.structured_content["episode_id"]
+        state.metadata.update({"episode_id": episode_id, "run_dir": run_dir, "server_url": server.url})
+        mcp = mcp_server_http(name="ewa-mcp", url=server.url, timeout=60)
+        state.tools = [_bind_episode(t, episode_id) for t in await mcp_tools(mcp).tools()
+                       if ToolDef(t).name not in HIDDEN_TOOLS]
+        state.messages = [ChatMessageSystem(content=SYSTEM_PROMPT),
+                          _first_message(str(state.sample_id), start, observation != "text")]
+        offline_token_counts(get_model())  # whichever solver plays next, the mock model counts offline
+        return state
+
+    return solve
+
+
+@solver
+def ewa_agent(max_turns: int | None = None):
+    """The default agent: generate, run the tool calls, stop when the episode has ended (read from its state
+    resource: not a step of the agent) or the turns run out; a model that answers in prose is nudged once."""
+
+    async def solve(state: TaskState, generate: Generate) -> TaskState:
+        episode_id, url = state.metadata.get("episode_id"), state.metadata.get("server_url")
+        if not episode_id or not url:
+            raise EvalError("ewa_agent plays after the task's setup (ewa_episode), which starts the episode")
+        model = offline_token_counts(get_model())
+        nudged = False
+        async with Client(url) as client:
             for _ in range(max_turns or int(state.metadata.get("step_limit") or 60)):
-                output = await model.generate(state.messages, tools)
+                output = await model.generate(state.messages, state.tools)
                 state.output = output
                 state.messages.append(output.message)
                 if output.message.tool_calls:
-                    result = await execute_tools(state.messages, tools)
+                    result = await execute_tools(state.messages, state.tools)
                     state.messages.extend(result.messages)
                     if await _status(client, episode_id) != "running":
                         break
@@ -397,7 +413,8 @@ def ewa_task(domains: list[str] | None, *, difficulty: str | None = None, sample
     dataset = ewa_dataset(domains, difficulty, sample, tasks, os.pathsep.join(dirs))
     return Task(
         dataset=dataset,
-        solver=ewa_agent(run_dir=out, task_dirs=dirs, observation=observation, max_turns=max_turns),
+        setup=ewa_episode(run_dir=out, task_dirs=dirs, observation=observation),
+        solver=ewa_agent(max_turns=max_turns),
         scorer=ewa_grader(),
         metrics=task_metrics(dataset),
         # The task suites ship with the package: a new release may change tasks, tools or grading.

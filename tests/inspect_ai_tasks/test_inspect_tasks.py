@@ -146,3 +146,16 @@ def test_standard_errors_and_the_per_domain_breakdown():
                                        "navigation_stderr": 0.0})
     assert inspect_tasks.overall_by_difficulty()(scores)["easy"] == 1.0
     assert inspect_tasks.overall_stderr()(scores[:1]) == 0.0  # one sample: no spread, not NaN
+
+
+@pytest.mark.browser
+def test_any_inspect_solver_plays_after_the_setup(tmp_path):
+    """The episode is started by the task's setup, so another solver (Inspect's own generate loop) can play."""
+    from inspect_ai.solver import generate
+
+    task = inspect_tasks.navigation(tasks="navigation-boston-000", run_dir=str(tmp_path / "run"))
+    [log] = inspect_eval(task, model=oracle_model(), solver=generate(tool_calls="loop"), message_limit=60,
+                         log_dir=str(tmp_path / "logs"), display="none")
+    assert log.status == "success", log.error
+    [sample] = log.samples
+    assert sample.scores["ewa_grader"].value["overall"] == 1.0, sample.scores["ewa_grader"].explanation
