@@ -284,11 +284,6 @@ def cmd_play(args: argparse.Namespace) -> int:
     if _task_dirs_or_error(args.tasks_dir) is None:
         return 2
     task_dirs = task_dirs_from(args.tasks_dir)
-    if args.split != "test" or args.seed:
-        split_dirs = _split_task_dirs(args)
-        if split_dirs is None:
-            return 2
-        task_dirs = split_dirs
     task = TaskStore(task_dirs).get(args.task_id)
     if task is None:
         print(f"error: unknown task id {args.task_id!r}; see `ewa-mcp tasks list`", file=sys.stderr)

@@ -60,4 +60,6 @@ if __name__ == "__main__":
     ns = parser.parse_args()
     if not ns.tools and not ns.tool:
         parser.error("name a tool, or pass --tools")
-    sys.exit(anyio.run(main, ns))
+    from ewa_mcp.pipes import quiet_on_closed_pipe  # `mcp_call.py ... | head` ends quietly, like ewa-mcp
+
+    sys.exit(quiet_on_closed_pipe(lambda: anyio.run(main, ns))())

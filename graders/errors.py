@@ -148,7 +148,9 @@ def classify(record: EpisodeRecord, outcome: Outcome) -> ErrorClassification:
             matched.setdefault("stopped_off_target", f"stopped {nav.distance_to_goal_m:.0f} m from the goal")
 
     if outcome.answer_ok is False and outcome.web_ok is not False and outcome.embodied_ok is not False:
-        matched["wrong_answer"] = "every goal was met but the answer check failed"
+        goals = [side for side, ok in (("web", outcome.web_ok), ("embodied", outcome.embodied_ok)) if ok is True]
+        matched["wrong_answer"] = ("the answer check failed" + (f" ({' and '.join(goals)} goals met)" if goals else
+                                                                 " (the task has no other goal)"))
 
     order = [key for key in CATEGORIES if key in matched]
     if not order:

@@ -269,3 +269,15 @@ def test_a_place_id_in_the_directions_form_shows_as_the_place_name(client, world
         assert "Walking route from" in html, (store.id, to_box)
     html = client.get("/directions", params={"from": FLATIRON, "to": TARGET}).text
     assert re.search(r'<input id="dir-from"[^>]*value="Flatiron Building"', html)
+
+
+def test_a_place_written_with_its_address_in_brackets_is_found(world):
+    """Intents write a place as "Name (address)"; the directions form finds it so (a play-tester's start was
+    refused), and still refuses what names nothing."""
+    from ewa_mcp.websites.map.places import WorldAdapter
+
+    adapter = WorldAdapter(world)
+    plain = adapter.resolve("Old South Church")
+    assert plain.place is not None
+    assert adapter.resolve("Old South Church (645 Boylston St)").place == plain.place
+    assert adapter.resolve("Nowhere Hall (1 Nothing Road)").error.startswith("no place matches")

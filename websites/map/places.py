@@ -7,6 +7,8 @@ caches the per-city street segments the SVG map draws.
 
 from __future__ import annotations
 
+import re
+
 import threading
 from dataclasses import dataclass, field
 from typing import Any
@@ -23,6 +25,9 @@ class Resolution:
     place: Any = None  # ewa_mcp.envs.street.world.Place
     choices: list[Any] = field(default_factory=list)  # several plausible places: the user picks
     error: str = ""
+
+
+_NAME_AND_ADDRESS = re.compile(r"\s*([^()]+?)\s*\(([^()]+)\)\s*")
 
 
 def _load_world() -> Any:
@@ -65,6 +70,14 @@ class WorldAdapter:
         if place is not None:
             return Resolution(place)
         results = self.search(text, None, 8)
+        named = _NAME_AND_ADDRESS.fullmatch(text)
+        if not results and named:
+            # "Old South Church (645 Boylston St)", the way task intents and place pages write a place: the name,
+            # else the address in brackets, names it.
+            for part in named.groups():
+                found = self.resolve(part)
+                if found.place is not None:
+                    return found
         if not results:
             return Resolution(error=f"no place matches {text!r}. Try a place name, a street address such as "
                                     f"'350 5th Ave', or an intersection such as '5th Ave & W 34th St'.")
