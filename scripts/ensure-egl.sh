@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Make sure OpenGL through EGL works for the first-person kitchen camera (ewa_mcp/indoor/camera3d.py):
+# Make sure OpenGL through EGL works for the first-person kitchen camera (ewa_mcp/envs/kitchen/camera3d.py):
 # the GL vendor-neutral dispatch (libegl1) and Mesa's EGL and drivers (libegl-mesa0, libgl1-mesa-dri), whose
 # llvmpipe renders on the CPU where no GPU driver is installed. Installed with apt when running as root.
 set -uo pipefail
