@@ -10,6 +10,7 @@ Rules (each fixes a defect of the reference grader):
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 from ewa_mcp.core.taskmodel import ObjectIn, ObjectState
@@ -141,16 +142,6 @@ def _objects(goal: Any, ctx: CheckContext) -> list[Obj] | ConditionResult:
     return state["objects"]
 
 
-def object_state(goal: ObjectState, ctx: CheckContext) -> ConditionResult:
-    objects = _objects(goal, ctx)
-    return objects if isinstance(objects, ConditionResult) else check_object_state(goal, objects)
-
-
-def object_in(goal: ObjectIn, ctx: CheckContext) -> ConditionResult:
-    objects = _objects(goal, ctx)
-    return objects if isinstance(objects, ConditionResult) else check_object_in(goal, objects)
-
-
 # ---------------------------------------------------------------- goals that tell a recipe apart (issue 26)
 # Heat sources a method goal can name. The instant CookObject is not one: it stays in the action space
 # (AI2-THOR's own action), but it cooks "somehow", so it never meets a goal that names how (docs/grading.md).
@@ -231,11 +222,17 @@ def check_holds_only(goal: Any, objects: list[Obj]) -> ConditionResult:
                            detail={"receptacles": len(contents), "extra": sorted(extra)}, note=note)
 
 
-def cooked_with(goal: Any, ctx: CheckContext) -> ConditionResult:
-    objects = _objects(goal, ctx)
-    return objects if isinstance(objects, ConditionResult) else check_cooked_with(goal, objects)
+def _on_objects(check: Callable[[Any, list[Obj]], ConditionResult]) -> Callable[[Any, CheckContext], ConditionResult]:
+    """A goal kind's entry point (Domain.checks): its check on the kitchen's objects, or unknown without them."""
+
+    def entry(goal: Any, ctx: CheckContext) -> ConditionResult:
+        objects = _objects(goal, ctx)
+        return objects if isinstance(objects, ConditionResult) else check(goal, objects)
+
+    return entry
 
 
-def holds_only(goal: Any, ctx: CheckContext) -> ConditionResult:
-    objects = _objects(goal, ctx)
-    return objects if isinstance(objects, ConditionResult) else check_holds_only(goal, objects)
+object_state = _on_objects(check_object_state)
+object_in = _on_objects(check_object_in)
+cooked_with = _on_objects(check_cooked_with)
+holds_only = _on_objects(check_holds_only)

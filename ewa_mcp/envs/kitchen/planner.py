@@ -437,6 +437,18 @@ class _Planner:
         return target["isToggled"] == want, f"{self.h(target['objectId'])} is not {'on' if want else 'off'}"
 
 
+def _play(planner: _Planner, parsed: list[_Op]) -> str | None:
+    """Run every op on the planner's kitchen; the first op whose effect does not hold, and why (None: all do)."""
+    planner.expect(parsed)
+    cooked: set[str] = set()
+    for op in parsed:
+        planner.run(op, cooked)
+        ok, why = planner.effect_holds(op)
+        if not ok:
+            return f"after '{op.describe()}' {why}"
+    return None
+
+
 def plan_ops(scene_name: str, ops: Sequence[dict[str, Any]], seed: int = 0,
              delivered_types: Iterable[str] = ()) -> list[dict[str, Any]]:
     """The kitchen tool calls that carry out ``ops`` in ``scene_name`` from its start state.
@@ -444,13 +456,9 @@ def plan_ops(scene_name: str, ops: Sequence[dict[str, Any]], seed: int = 0,
     Raises ``PlanError`` when they cannot be carried out (a missing food or tool, a bad op)."""
     parsed = _parse_ops(ops)
     planner = _Planner(scene_name, seed, delivered_types)
-    planner.expect(parsed)
-    cooked: set[str] = set()
-    for op in parsed:
-        planner.run(op, cooked)
-        ok, why = planner.effect_holds(op)
-        if not ok:
-            raise PlanError(f"{planner.scene}: after '{op.describe()}' {why}")
+    problem = _play(planner, parsed)
+    if problem:
+        raise PlanError(f"{planner.scene}: {problem}")
     return planner.calls
 
 
@@ -476,13 +484,9 @@ def check_recipe_executable(scene_name: str, ops: Sequence[dict[str, Any]],
         return False, f"{scene} has no {', '.join(missing)} and it is not among the types that can be bought"
     try:
         planner = _Planner(scene, 0, deliveries)
-        planner.expect(parsed)
-        cooked: set[str] = set()
-        for op in parsed:
-            planner.run(op, cooked)
-            ok, why = planner.effect_holds(op)
-            if not ok:
-                return False, f"after '{op.describe()}' {why}"
+        problem = _play(planner, parsed)
+        if problem:
+            return False, problem
         # lasting effects: every slice and cook, and the last placement of each object type
         last_put: dict[str, _Op] = {}
         for op in parsed:

@@ -102,6 +102,19 @@ def view_png(city: str, node: int, heading: int) -> bytes:
     return render_png(compute_scene(world, world.city(city), node, float(heading), ""))
 
 
+def neighbour_lines(neighbours: list[dict[str, Any]], *, named: bool) -> list[str]:
+    """The neighbour list of an observation: with each street's name (text), or without (vision: the signs in the
+    images name the streets)."""
+    rule = "each direction names one street" if named else "each direction leads along one street"
+    lines = [f"Neighbours (street_move direction or neighbour id; {rule}):"]
+    for n in neighbours:
+        label = n["direction"] or "(by id only)"
+        along = f" along {n['street']}" if named else ""
+        lines.append(f"- {label}: {n['node']}{along}, heading {round(n['heading'])}° "
+                     f"({n['relative_heading']:+.0f}° relative), {n['distance_m']:.0f} m")
+    return lines
+
+
 class StreetEnvironment(Environment):
     side = "embodied"
     name = "street"
@@ -180,11 +193,7 @@ class StreetEnvironment(Environment):
         lines.append(f"You are on {where} in {g.name}, facing {cardinal(self.heading, 16)} ({round(self.heading)}°).")
         if self.stopped:
             lines.append(self.stopped_sentence())
-        lines.append("Neighbours (street_move direction or neighbour id; each direction names one street):")
-        for n in neighbours:
-            label = n["direction"] or "(by id only)"
-            lines.append(f"- {label}: {n['node']} along {n['street']}, heading {round(n['heading'])}° "
-                         f"({n['relative_heading']:+.0f}° relative), {n['distance_m']:.0f} m")
+        lines += neighbour_lines(neighbours, named=True)
         here = places_here(self.world, g, self.node, self.heading)
         if here:
             # one place per line: "Right here: on your left, …" / "Also here: on your right, …"
@@ -223,11 +232,7 @@ class StreetEnvironment(Environment):
         lines.append(f"You are facing {cardinal(self.heading, 16)} ({round(self.heading)}°).")
         if self.stopped:
             lines.append(self.stopped_sentence())
-        lines.append("Neighbours (street_move direction or neighbour id; each direction leads along one street):")
-        for n in neighbours:
-            label = n["direction"] or "(by id only)"
-            lines.append(f"- {label}: {n['node']}, heading {round(n['heading'])}° "
-                         f"({n['relative_heading']:+.0f}° relative), {n['distance_m']:.0f} m")
+        lines += neighbour_lines(neighbours, named=False)
         view_data: list[dict[str, Any]] = []
         images: list[bytes] = []
         for label, heading in self.views(frame):
