@@ -291,12 +291,25 @@ def describe(scene: Scene) -> str:
     return " ".join(parts)
 
 
+# The words of a description -> the details a facade is drawn with (street_view.draw_details): one table for the
+# text's cues and the image's, so the two cannot drift apart.
+DETAIL_WORDS = {
+    "lions": ("lion",), "clock": ("clock",), "dome": ("dome",), "statue": ("statue", "figure"),
+    "spire": ("spire", "steeple", "pointed"), "columns": ("column", "colonnade", "portico"),
+    "arch": ("arched", "arches", "archway"), "steps": ("steps", "stairs", "stairway", "staircase"),
+    "neon": ("neon",), "awning": ("awning", "canopy", "marquee"), "lamps": ("globe lamp", "lamps"),
+    "trees": ("tree", "park", "garden", "lawn"), "twin": ("twin",), "flags": ("flag",),
+}
+
+def details_of(hint: str) -> set[str]:
+    text = hint.lower()
+    return {name for name, words in DETAIL_WORDS.items() if any(w in text for w in words)}
+
+
 def text_cues(scene: Scene) -> frozenset[str]:
     """The ids of the visible things ``describe`` names (street_view.render_cues reports the ids it draws;
     a test checks these are a subset). Street names away from a corner's signs are map knowledge the
     text adds, not something a camera shows, so they have no id; the corner's signs do."""
-    from .street_view import details_of  # the words -> drawn details table lives with the drawing
-
     cues = {"road_ahead" if scene.road_ahead else "road_ends"}
     if scene.road_ahead:
         cues |= {f"opening:{o.side}:{round(o.distance_m)}" for o in scene.openings[:3]}

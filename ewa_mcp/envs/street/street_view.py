@@ -23,7 +23,7 @@ from ewa_mcp.street_drawing.compass import draw_compass_strip
 from ewa_mcp.street_drawing.png import encode_png
 from ewa_mcp.street_drawing.sky import sky_gradient
 from ewa_mcp.street_drawing.text import bundled_font
-from .scene import SKYLINE_SHOWN, Frontage, Scene
+from .scene import SKYLINE_SHOWN, Frontage, Scene, details_of
 
 WIDTH, HEIGHT = 480, 330  # large enough for a lion by a door or a clock on a tower to read
 CAMERA_HEIGHT_M = 1.7
@@ -138,19 +138,7 @@ def draw_facade(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], styl
 
 
 # Details a place's description mentions, drawn on its facade (first matching word wins per detail).
-DETAIL_WORDS = {
-    "lions": ("lion",), "clock": ("clock",), "dome": ("dome",), "statue": ("statue", "figure"),
-    "spire": ("spire", "steeple", "pointed"), "columns": ("column", "colonnade", "portico"),
-    "arch": ("arched", "arches", "archway"), "steps": ("steps", "stairs", "stairway", "staircase"),
-    "neon": ("neon",), "awning": ("awning", "canopy", "marquee"), "lamps": ("globe lamp", "lamps"),
-    "trees": ("tree", "park", "garden", "lawn"), "twin": ("twin",), "flags": ("flag",),
-}
 GOLD, BRONZE, NEON, LION = (212, 175, 55), (140, 100, 50), (255, 60, 90), (222, 214, 196)
-
-
-def details_of(hint: str) -> set[str]:
-    text = hint.lower()
-    return {name for name, words in DETAIL_WORDS.items() if any(w in text for w in words)}
 
 
 def draw_details(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], hint: str) -> set[str]:
