@@ -34,6 +34,11 @@ SCROLL_JS = """(dir) => {
 }"""
 
 
+# How long a refused navigation's error page may take to commit past the action's own deadline on a loaded machine
+# (it normally commits within milliseconds, and the wait ends as soon as it does).
+ERROR_PAGE_WAIT_MS = 3000.0
+
+
 class NavigationRefused(EnvError):
     """The action led the tab to a URL the guard refused (the tab was stepped back)."""
 
@@ -174,10 +179,22 @@ class BrowserActions:
             # The browser's guard failed the navigation (a link, a form or a redirect off-site) and
             # the tab shows its error page: step back to where the agent was, which is no new visit.
             s.restoring = True
+            back_to = s.history[-1] if s.history else ""  # the last page the agent saw (no error pages there)
             try:
-                await current.page.go_back(wait_until="load")
-            except PlaywrightError:
-                pass
+                try:
+                    await current.page.go_back(wait_until="load")
+                except PlaywrightError:
+                    pass  # the step back can be interrupted by the error page committing late: checked below
+                for _ in range(4):
+                    # A refused form POST can leave no entry to go back to, and its error page can commit after
+                    # the step back: watch a moment longer and open the page the agent was on if it does (a
+                    # refused navigation is rare; the second this costs is not).
+                    await asyncio.sleep(0.25)
+                    if current.page.url.startswith("chrome-error:") and back_to.startswith("http"):
+                        try:
+                            await current.page.goto(back_to, wait_until="load")
+                        except PlaywrightError:
+                            pass
             finally:
                 s.restoring = False
         raise NavigationRefused(f"{action_name} led to {url[:200]}, which is refused: only the embedded sites are "
@@ -192,7 +209,7 @@ class BrowserActions:
         try:
             await page.wait_for_event(
                 "framenavigated", predicate=lambda frame: frame == page.main_frame and frame.url.startswith(
-                    "chrome-error:"), timeout=max(500.0, (deadline - time.monotonic()) * 1000))
+                    "chrome-error:"), timeout=max(ERROR_PAGE_WAIT_MS, (deadline - time.monotonic()) * 1000))
         except PlaywrightError:
             pass  # no error page came (the navigation was cancelled, or replaced by another): nothing to undo
 
