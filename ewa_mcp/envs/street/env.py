@@ -210,19 +210,23 @@ class StreetEnvironment(Environment):
         if images:
             lines.append("Images: " + ", ".join(v["view"] for v in view_data) + " views, in that order.")
         lines.append(f"Walked {len(self.path) - 1} moves, {self.distance_walked_m:.0f} m.")
-        data = {
-            "city": g.city,
-            "node": g.ids[self.node],
-            "streets": streets,
+        data = {"city": g.city, "streets": streets, **self._walk_data(neighbours, view_data)}
+        return Observation(text="\n".join(lines), data=data, images=images)
+
+    def _walk_data(self, neighbours: list[dict[str, Any]],
+                   views: list[ViewData] | list[dict[str, Any]]) -> dict[str, Any]:
+        """What every observation's data holds, text or vision (text adds the city and the street names)."""
+        assert self.graph is not None
+        return {
+            "node": self.graph.ids[self.node],
             "heading": round(self.heading, 1),
             "stopped": self.stopped,
             "walk_stopped": self.stopped,
             "neighbours": neighbours,
-            "views": view_data,
+            "views": views,
             "moves": len(self.path) - 1,
             "distance_walked_m": round(self.distance_walked_m, 1),
         }
-        return Observation(text="\n".join(lines), data=data, images=images)
 
     def _vision_observation(self, frame: Literal["relative", "absolute"], note: str) -> Observation:
         assert self.graph is not None
@@ -241,17 +245,7 @@ class StreetEnvironment(Environment):
         lines.append("Images: " + ", ".join(f"{v['view']} ({round(v['heading'])}°)" for v in view_data)
                      + " views, in that order; a compass strip along each image's bottom edge shows its bearing.")
         lines.append(f"Walked {len(self.path) - 1} moves, {self.distance_walked_m:.0f} m.")
-        data = {
-            "node": g.ids[self.node],
-            "heading": round(self.heading, 1),
-            "stopped": self.stopped,
-            "walk_stopped": self.stopped,
-            "neighbours": neighbours,
-            "views": view_data,
-            "moves": len(self.path) - 1,
-            "distance_walked_m": round(self.distance_walked_m, 1),
-        }
-        return Observation(text="\n".join(lines), data=data, images=images)
+        return Observation(text="\n".join(lines), data=self._walk_data(neighbours, view_data), images=images)
 
     async def observe(self) -> Observation:
         return self.observation()
