@@ -50,6 +50,23 @@ def test_off_a_terminal_lines_are_spaced_out_but_the_last_is_always_written() ->
     assert [line.split(" episodes")[0] for line in lines] == ["progress: 1/50", "progress: 50/50"]
 
 
+def _read_all(fd: int, until: str, timeout: float = 10.0) -> str:
+    """What the terminal got: a pty hands its output over in pieces, so read until ``until`` is there (and the
+    line after it ends) or the time is up."""
+    import select
+    import time
+
+    out, deadline = "", time.monotonic() + timeout
+    while time.monotonic() < deadline and not (until in out and out.endswith("\n")):
+        ready, _, _ = select.select([fd], [], [], 0.1)
+        if ready:
+            try:
+                out += os.read(fd, 65536).decode()
+            except OSError:
+                break
+    return out
+
+
 def test_on_a_terminal_one_line_is_redrawn_in_place() -> None:
     leader, follower = os.openpty()
     with os.fdopen(follower, "w", encoding="utf-8") as terminal:
@@ -57,8 +74,7 @@ def test_on_a_terminal_one_line_is_redrawn_in_place() -> None:
         assert bar.interactive
         for _ in range(3):
             bar.tick(outcome())
-    os.set_blocking(leader, False)
-    shown = os.read(leader, 65536).decode()
+    shown = _read_all(leader, until="3/3 episodes")
     os.close(leader)
     assert shown.count("\r[") == 3 and "3/3 episodes" in shown and "ETA 0:00" in shown
 
