@@ -39,5 +39,10 @@ def quiet_on_closed_pipe(main: Callable[..., int]) -> Callable[..., int]:
         except BrokenPipeError:
             _detach_stdout()
             return CLOSED_PIPE_STATUS
+        except BaseExceptionGroup as group:  # an async main (anyio task groups) wraps the error in a group
+            if group.split(BrokenPipeError)[1] is not None:  # something else went wrong too: not ours to hide
+                raise
+            _detach_stdout()
+            return CLOSED_PIPE_STATUS
 
     return wrapper

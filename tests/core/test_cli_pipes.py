@@ -52,3 +52,29 @@ def test_ewa_grade_output_into_a_closed_pipe(tmp_path: Path) -> None:
     done = run_into_closed_pipe("-m", "ewa_mcp.graders.cli", str(tmp_path / "run"), "--format", "json")
     assert "Traceback" not in done.stderr and "BrokenPipeError" not in done.stderr, done.stderr
     assert done.returncode == CLOSED_PIPE_STATUS
+
+
+def test_an_async_main_whose_task_group_meets_the_closed_pipe_ends_quietly(monkeypatch) -> None:
+    """examples/mcp_call.py runs its main under anyio: the BrokenPipeError arrives wrapped in an exception group
+    (a play-tester's `mcp_call.py ... | head` printed the traceback). Anything else in the group still raises."""
+    import anyio
+
+    from ewa_mcp import pipes
+
+    monkeypatch.setattr(pipes, "_detach_stdout", lambda: None)  # pytest's captured stdout is no real pipe
+
+    async def main() -> int:
+        async def write() -> None:
+            raise BrokenPipeError
+
+        async with anyio.create_task_group() as group:
+            group.start_soon(write)
+        return 0
+
+    assert pipes.quiet_on_closed_pipe(lambda: anyio.run(main))() == CLOSED_PIPE_STATUS
+
+    def mixed() -> int:
+        raise BaseExceptionGroup("two failures", [BrokenPipeError(), ValueError("a real failure")])
+
+    with pytest.raises(BaseExceptionGroup):
+        pipes.quiet_on_closed_pipe(mixed)()

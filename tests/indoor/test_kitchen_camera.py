@@ -8,6 +8,7 @@ scripts/ensure-egl.sh), so a skip would hide a broken camera.
 from __future__ import annotations
 
 import json
+from collections import Counter
 import math
 from pathlib import Path
 
@@ -162,12 +163,54 @@ def test_closed_receptacles_hide_contents_and_cooked_food_is_darker():
     assert sum(browned(tomato)) < sum(tomato)
 
 
+def test_each_knob_wears_the_colour_of_the_burner_it_lights():
+    from ewa_mcp.envs.kitchen.scene3d import BURNER_MARKS, burner_marks
+
+    for scene in ("FloorPlan1", "FloorPlan12", "FloorPlan23"):
+        s = new_session(scene)
+        marks = burner_marks(s.objects.values())
+        burners = [i for i, o in s.objects.items() if o["objectType"] == "StoveBurner"]
+        knobs = [o for o in s.objects.values() if o["objectType"] == "StoveKnob" and o.get("controlledObjects")]
+        assert burners and knobs
+        assert len({marks[b] for b in burners}) == min(len(burners), len(BURNER_MARKS)), scene
+        for knob in knobs:
+            assert marks[knob["objectId"]] == marks[knob["controlledObjects"][0]]
+        # and both are drawn: the ring of every burner and the face of every knob in that colour
+        world, _ = SceneBuilder().build(s.meta, s.reachable)
+        drawn = Counter(p.colour for p in world)
+        for knob in knobs:
+            assert drawn[marks[knob["objectId"]]] >= 2, scene
+
+
+def test_a_cooked_slice_is_brown_with_sear_stripes_not_a_darker_red():
+    from ewa_mcp.envs.kitchen.scene3d import FOOD_COLOURS, SEAR, browned
+
+    s = new_session("FloorPlan1")
+    s._step("PickupObject", s.resolve("Knife", "interact")[0], forceAction=True)
+    s._step("SliceObject", s.resolve("Tomato", "interact")[0], forceAction=True)
+    piece = next(i for i, o in s.objects.items() if o["objectType"] == "TomatoSliced")
+
+    def stripes() -> int:
+        world, _ = SceneBuilder().build(s.meta, s.reachable)
+        return sum(1 for p in world if p.colour == SEAR)
+
+    assert stripes() == 0
+    s._step("CookObject", piece, forceAction=True)
+    assert stripes() == 3
+    assert not red(*(int(255 * c) for c in browned(FOOD_COLOURS["Tomato"])))  # a cooked tomato no longer reads as red
+
+
 # ------------------------------------------------------------------ vision-only observation
 def test_vision_observation_is_the_image_plus_what_a_camera_cannot_give():
     s = new_session("FloorPlan12")
+    first, _ = build_observation(s, "vision", view="first_person")
+    assert "colour of the ring round the burner it lights" in first  # the frame's conventions, once
+    for leak in ("In reach", "CounterTop", "Fridge", "Tomato", "x="):
+        assert leak not in first, leak
     s.teleport("Knife")
     s.pickup("Knife")
     text, data = build_observation(s, "vision", view="first_person")
+    assert "colour of the ring" not in text
     assert text.splitlines()[0].endswith("Holding: Knife_1.")
     assert "Last action succeeded. Done: PickupObject Knife_1." in text
     for leak in ("In reach", "CounterTop", "Fridge", "Tomato", "x=", "facing", "m away"):

@@ -281,3 +281,20 @@ def test_a_place_written_with_its_address_in_brackets_is_found(world):
     assert plain.place is not None
     assert adapter.resolve("Old South Church (645 Boylston St)").place == plain.place
     assert adapter.resolve("Nowhere Hall (1 Nothing Road)").error.startswith("no place matches")
+
+
+def test_a_place_written_with_its_city_is_found_in_that_city(world):
+    """The search lists a place as "400 5th Ave, Pittsburgh"; written so (or with the state after the city) the
+    directions form finds it, as a play-tester wrote it; a city that does not have it still finds nothing."""
+    from ewa_mcp.websites.map.places import WorldAdapter
+
+    adapter = WorldAdapter(world)
+    plain = adapter.resolve("645 Boylston St")
+    assert plain.place is not None
+    assert adapter.resolve("645 Boylston St, Boston").place == plain.place
+    assert adapter.resolve("645 Boylston St, Boston, MA").place == plain.place
+    named = adapter.resolve("Old South Church (645 Boylston St)").place
+    assert named is not None and adapter.resolve("Old South Church (645 Boylston St), Boston").place == named
+    assert adapter.resolve("645 Boylston St, Pittsburgh").place is None
+    empire = adapter.resolve("350 5th Ave").place
+    assert empire is not None and adapter.resolve("350 5th Ave, New York, NY").place == empire

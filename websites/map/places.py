@@ -64,20 +64,31 @@ class WorldAdapter:
     def search(self, query: str, city: str | None, limit: int) -> list[Any]:
         return list(self.world.search(query, city=city, limit=limit))
 
-    def resolve(self, text: str) -> Resolution:
-        """Text -> one place: an exact place or node id, else the search's single clear match."""
+    def resolve(self, text: str, city: str | None = None) -> Resolution:
+        """Text -> one place: an exact place or node id, else the search's single clear match (in ``city``
+        if given)."""
         place = self.place(text)
         if place is not None:
             return Resolution(place)
-        results = self.search(text, None, 8)
+        results = self.search(text, city, 8)
         named = _NAME_AND_ADDRESS.fullmatch(text)
         if not results and named:
             # "Old South Church (645 Boylston St)", the way task intents and place pages write a place: the name,
             # else the address in brackets, names it.
             for part in named.groups():
-                found = self.resolve(part)
+                found = self.resolve(part, city)
                 if found.place is not None:
                     return found
+        if not results and city is None:
+            # "400 5th Ave, Pittsburgh" (or "..., Pittsburgh, PA"), the way the search lists a place and people
+            # write one: the address in that city.
+            parts = [part.strip() for part in text.split(",")]
+            names = {alias: key for key in self.cities() for alias in self._city_aliases(key)}
+            for i in range(len(parts) - 1, 0, -1):
+                if parts[i].casefold() in names and all(parts[:i]):
+                    found = self.resolve(", ".join(parts[:i]), names[parts[i].casefold()])
+                    if found.place is not None or found.choices:
+                        return found
         if not results:
             return Resolution(error=f"no place matches {text!r}. Try a place name, a street address such as "
                                     f"'350 5th Ave', or an intersection such as '5th Ave & W 34th St'.")
@@ -93,6 +104,15 @@ class WorldAdapter:
                 # anonymous twin): the same answer either way; the place itself is the one to report
                 return Resolution(next((p for p in candidates if not p.id.startswith("address:")), candidates[0]))
         return Resolution(choices=results)
+
+    def _city_aliases(self, city: str) -> set[str]:
+        """How people write a city after an address: its key, its name, the name before a comma or bracket
+        ("Boston (Back Bay and Downtown)" -> boston), and New York's usual names for Manhattan."""
+        name = self.city_name(city).casefold()
+        aliases = {city.casefold(), name, re.split(r"[(,]", name)[0].strip()}
+        if city == "manhattan":
+            aliases |= {"new york", "new york city", "nyc", "ny"}
+        return aliases
 
     # ------------------------------------------------------------ routing and drawing
     def directions(self, origin: Any, destination: Any, via: Any = None) -> Any:

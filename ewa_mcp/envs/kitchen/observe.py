@@ -181,6 +181,11 @@ def build_observation(session: KitchenSession, mode: str = "text", *, view: str 
     return "\n".join(lines), data
 
 
+CAMERA_LEGEND = ("In the frame: each stove knob is the colour of the ring round the burner it lights; a lit burner "
+                 "glows orange and an on knob shows a red mark; cooked food is brown, cooked slices carry dark "
+                 "stripes; closed doors hide what is behind them; what you hold is at the bottom.")
+
+
 def camera_observation(session: KitchenSession, notes: list[str],
                        last_error: str | None) -> tuple[str, dict[str, Any]]:
     """Vision only: what the camera frame cannot show, as AI2-THOR's event gives it beside the frame — what is
@@ -194,6 +199,8 @@ def camera_observation(session: KitchenSession, notes: list[str],
         lines.append(f"Last action failed: {last_error}")
     elif report is not None:
         lines.append("Last action succeeded. " + report.line(session.handle))
+    else:  # the first frame: how the camera shows states that a photograph would show by detail too small here
+        lines.append(CAMERA_LEGEND)
     lines.extend(notes)
     data: dict[str, Any] = {
         "scene": session.scene,

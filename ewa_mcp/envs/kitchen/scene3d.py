@@ -6,10 +6,13 @@ reachable positions, which tell which side of a cabinet or fridge faces the room
 
 How states look:
 * sliced food is its pieces (the simulator places them side by side where the food lay), each drawn as a
-  slice of that food; cooked food and pieces are browned (darker); a cracked egg is a white with a yolk;
+  slice of that food; cooked food and pieces are browned (most of the way to a toasted brown, whatever the
+  food) and cooked slices carry dark sear stripes; a cracked egg is a white with a yolk;
 * a closed Fridge, Cabinet, Drawer or Microwave is a solid box with its door, and nothing inside is drawn;
   open, it is a hollow box with its door swung out (a drawer slides out, carrying its contents), the fridge
   lit inside, and its contents on thin wire shelves that do not hide the shelf below;
+* each burner has a coloured ring and the knob that lights it is the same colour (blue, yellow, violet,
+  cyan, ... in the order of the burners' ids), so which knob drives which burner can be seen;
 * a lit burner glows red-orange, a turned-on knob shows a red mark, a running microwave's window glows, a
   toaster's slots glow, a coffee machine shows a green light; a filled cup or mug shows coffee;
 * the held object (with what it holds) floats at the bottom of the frame, drawn over everything.
@@ -83,10 +86,44 @@ FOOD_COLOURS: dict[str, Colour] = {
 }
 
 
+TOASTED = (0.36, 0.24, 0.10)
+SEAR = (0.13, 0.07, 0.03)
+
+
 def browned(colour: Colour) -> Colour:
-    """Cooked: darker and browner, whatever the food."""
-    r, g, b = colour
-    return (r * 0.55 + 0.12, g * 0.42 + 0.05, b * 0.30 + 0.02)
+    """Cooked: most of the way to a toasted brown, whatever the food, so that a cooked tomato is no longer red
+    and a cooked slice of bread no longer pale (a darker shade of the raw colour was hard to tell at 300×300)."""
+    return tuple(0.2 * c + 0.8 * t for c, t in zip(colour, TOASTED))  # type: ignore[return-value]
+
+
+# The rings round the burners and the knobs that light them share a colour; none is red or orange (a lit
+# burner's glow), black/grey (the stove) or a food's green.
+BURNER_MARKS: tuple[Colour, ...] = ((0.15, 0.40, 0.95), (0.95, 0.85, 0.15), (0.65, 0.30, 0.90),
+                                   (0.10, 0.80, 0.85), (0.97, 0.97, 0.97), (0.95, 0.55, 0.80))
+
+
+def burner_marks(objects: Iterable[dict[str, Any]]) -> dict[str, Colour]:
+    """The mark colour of every burner and of every knob (its burner's): burners of one stove take the colours in
+    the order of their ids, so each stove's burners differ and the same kitchen always gets the same colours."""
+    objects = list(objects)
+    burners = sorted((o for o in objects if o["objectType"] == "StoveBurner"), key=lambda o: o["objectId"])
+    stoves: list[list[dict[str, Any]]] = []
+    for burner in burners:
+        c, _ = _box_of(burner)
+        for stove in stoves:
+            sc, _ = _box_of(stove[0])
+            if abs(sc[0] - c[0]) < 0.9 and abs(sc[2] - c[2]) < 0.9:
+                stove.append(burner)
+                break
+        else:
+            stoves.append([burner])
+    marks = {b["objectId"]: BURNER_MARKS[i % len(BURNER_MARKS)] for stove in stoves for i, b in enumerate(stove)}
+    for knob in objects:
+        if knob["objectType"] == "StoveKnob":
+            lit = [marks[b] for b in knob.get("controlledObjects") or [] if b in marks]
+            if lit:
+                marks[knob["objectId"]] = lit[0]
+    return marks
 
 
 # ------------------------------------------------------------------ helpers
@@ -215,12 +252,13 @@ class SceneBuilder:
                 offsets[obj["objectId"]] = (frame.front[0] * d, 0.0, frame.front[1] * d)
                 contents_shift[obj["objectId"]] = offsets[obj["objectId"]]
         parts.extend(stove_bodies(objects))
+        marks = burner_marks(objects)
         for obj in objects:
             kind = obj["objectType"]
             if obj.get("pickupable") or kind == "Floor":
                 continue
             offset = offsets.get(obj["objectId"])
-            made = furniture_parts(obj, frames[obj["objectId"]], frames)
+            made = furniture_parts(obj, frames[obj["objectId"]], frames, marks)
             parts.extend(_shift(p, offset) for p in made) if offset else parts.extend(made)
             if obj.get("openable") and obj.get("isOpen"):
                 shelf = shelf_rails(obj, frames[obj["objectId"]], by_id)
@@ -318,8 +356,10 @@ def stove_bodies(objects: Iterable[dict[str, Any]]) -> list[Part]:
     return parts
 
 
-def furniture_parts(obj: dict[str, Any], f: Frame, frames: dict[str, Frame]) -> list[Part]:
+def furniture_parts(obj: dict[str, Any], f: Frame, frames: dict[str, Frame],
+                    marks: dict[str, Colour] | None = None) -> list[Part]:
     kind = obj["objectType"]
+    mark = (marks or {}).get(obj["objectId"])
     (x0, y0, z0), (x1, y1, z1) = f.lo, f.hi
     open_ = bool(obj.get("isOpen"))
     on = bool(obj.get("isToggled"))
@@ -385,6 +425,8 @@ def furniture_parts(obj: dict[str, Any], f: Frame, frames: dict[str, Frame]) -> 
         cx, _, cz = f.center
         r = min(f.size[0], f.size[2]) * 0.8
         parts = [Part("cylinder", (cx, y1 - 0.005, cz), (r, 0.02, r), (0.18, 0.18, 0.19))]
+        if mark is not None:  # a coloured ring round the burner, the colour of the knob that lights it
+            parts.append(Part("cylinder", (cx, y1 - 0.004, cz), (r * 1.3, 0.016, r * 1.3), mark))
         if on:
             parts.append(Part("cylinder", (cx, y1 + 0.007, cz), (r * 0.8, 0.006, r * 0.8), GLOW_RED, glow=1.0))
             parts.append(Part("cylinder", (cx, y1 + 0.009, cz), (r * 0.45, 0.006, r * 0.45), (0.2, 0.05, 0.02)))
@@ -393,7 +435,11 @@ def furniture_parts(obj: dict[str, Any], f: Frame, frames: dict[str, Frame]) -> 
             parts.append(Part("cylinder", (cx, y1 + 0.009, cz), (r * 0.45, 0.006, r * 0.45), (0.12, 0.12, 0.13)))
         return parts
     if kind == "StoveKnob":
-        parts = [f.local(0.0, (y0 + y1) / 2, 0.01, w * 0.9, h * 0.9, 0.03, BLACK)]
+        # Simulator knobs are 2-3 cm, a pixel or two at 300×300: drawn at least 4.5 cm so their colour shows.
+        kw, kh = max(w * 0.9, 0.045), max(h * 0.9, 0.045)
+        parts = [f.local(0.0, (y0 + y1) / 2, 0.01, kw, kh, 0.03, BLACK)]
+        if mark is not None:  # the knob's face in the colour of its burner's ring
+            parts.append(f.local(0.0, (y0 + y1) / 2, 0.03, kw * 0.8, kh * 0.8, 0.012, mark))
         if on:
             parts.append(f.local(0.0, y1 + 0.008, 0.0, w * 0.6, 0.012, 0.02, GLOW_RED, 1.0))
         return parts
@@ -545,7 +591,12 @@ def shape_parts(obj: dict[str, Any], c: Vec, s: Vec, yaw: float, upright: bool =
             flesh = browned(flesh)
         # the skin or crust round the edge, the flesh or crumb on the faces
         mesh = "box" if kind in ("BreadSliced", "LettuceSliced", "AppleSliced") or upright else "cylinder"
-        return [part(mesh, c, s, base or flesh), part(mesh, c, inner_size, flesh)]  # type: ignore[arg-type]
+        parts = [part(mesh, c, s, base or flesh), part(mesh, c, inner_size, flesh)]  # type: ignore[arg-type]
+        if cooked and not upright:  # dark sear stripes across the top face: a cooked slice at a glance
+            top = inner_size[1] / 2 + 0.001
+            parts.extend(part("box", at(0.0, top, w), (sx * 0.7, 0.002, max(0.008, sz * 0.12)), SEAR)
+                         for w in (-sz * 0.25, 0.0, sz * 0.25))
+        return parts
     if kind == "EggCracked":
         white = browned(WHITE) if cooked else WHITE
         yolk = (0.85, 0.5, 0.05) if cooked else (1.0, 0.75, 0.1)
