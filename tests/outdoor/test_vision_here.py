@@ -125,7 +125,8 @@ def test_the_text_mode_is_unchanged_by_the_drawn_places(world):
 
 
 @pytest.mark.anyio
-@pytest.mark.parametrize("place_id", ["store-cvs-midtown", "poi-philadelphia-elfreths-alley", "poi-boston-boston-common"])
+@pytest.mark.parametrize("place_id",
+                         ["store-cvs-midtown", "poi-philadelphia-elfreths-alley", "poi-boston-boston-common"])
 async def test_vision_observation_at_a_goal_carries_no_scene_text(world, place_id):
     p = world.places[place_id]
     task = Task.model_validate({

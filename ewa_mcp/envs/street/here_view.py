@@ -17,8 +17,18 @@ from PIL import ImageDraw
 
 from ewa_mcp.street_drawing.camera import Camera
 from ewa_mcp.street_drawing.text import bundled_font
-from .scene import MATERIAL_WORDS, OPEN_SPACE_KINDS, Frontage, Scene, details_of, is_alley, material_of, park_features, \
-    sign_colour_of
+from .scene import (
+    MATERIAL_WORDS,
+    OPEN_SPACE_KINDS,
+    SIGN_KINDS,
+    Frontage,
+    Scene,
+    details_of,
+    is_alley,
+    material_of,
+    park_features,
+    sign_colour_of,
+)
 from .street_view import FACADE_X_M, ROAD_HALF_M, _capped_height, _sign_colour, draw_details, draw_facade
 
 FRONT_Z_M = 13.0  # a place straight across the sidewalk: its front this deep (the end wall stands at 14 m)
@@ -28,6 +38,7 @@ PARK_Z_M = 70.0  # a park beside the street: the depth its lawn reaches (no buil
 DETAIL_H_M = 16.0  # the height of the part of a front its details are drawn on (a door, a clock, a dome)
 LAWN, PATH, POND, TRUNK, LEAVES = (96, 150, 72), (214, 200, 168), (70, 128, 188), (90, 64, 44), (52, 112, 56)
 FOUNTAIN, MONUMENT, STREET_SIGN = (236, 242, 246), (200, 196, 186), (18, 110, 58)
+SHOP_GLASS = (150, 190, 210)  # a lit shop window
 
 
 def park_here(scene: Scene) -> Frontage | None:
@@ -98,7 +109,26 @@ def _board_colour(f: Frontage) -> tuple[int, int, int]:
     return sign_colour_of(f.hint) or _sign_colour(f.sign or "")
 
 
-def _mark(draw: ImageDraw.ImageDraw, f: Frontage, quad: list[tuple[float, float]], cues: set[str]) -> None:
+def _shopfront(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], height_m: float) -> None:
+    """A shop's ground floor on a front quad ``height_m`` tall: display windows either side of a glazed door."""
+    (bx0, by0), (tx0, ty0), (tx1, ty1), (bx1, by1) = quad
+    u = min(0.9, 3.2 / max(height_m, 3.3))
+
+    def at(t: float, v: float) -> tuple[float, float]:
+        bx, by = bx0 + (bx1 - bx0) * t, by0 + (by1 - by0) * t
+        tx, ty = tx0 + (tx1 - tx0) * t, ty0 + (ty1 - ty0) * t
+        return bx + (tx - bx) * v, by + (ty - by) * v
+
+    for t0, t1 in ((0.06, 0.42), (0.58, 0.94)):
+        draw.polygon([at(t0, 0.03), at(t0, u), at(t1, u), at(t1, 0.03)], fill=SHOP_GLASS, outline=(40, 40, 44))
+    draw.polygon([at(0.44, 0.0), at(0.44, u * 0.85), at(0.56, u * 0.85), at(0.56, 0.0)], fill=(44, 52, 60),
+                 outline=(200, 200, 200))
+
+
+def _mark(draw: ImageDraw.ImageDraw, f: Frontage, quad: list[tuple[float, float]], cues: set[str],
+          height_m: float) -> None:
+    if f.kind in SIGN_KINDS and not is_alley(f.sign or ""):
+        _shopfront(draw, quad, height_m)
     cues.add(f"here:{f.place_id}")
     cues.add(f"facade:{f.place_id}")
     cues |= {f"detail:{f.place_id}:{d}" for d in draw_details(draw, quad, f.hint)}
@@ -125,7 +155,7 @@ def _facing_front(draw: ImageDraw.ImageDraw, cam: Camera, rng: random.Random, f:
     if is_alley(f.sign or ""):
         _alley_mouth(draw, cam, (v0 + v1) / 2, z)
     low = [cam.project(v0, 0, z), cam.project(v0, dh, z), cam.project(v1, dh, z), cam.project(v1, 0, z)]
-    _mark(draw, f, low, cues)
+    _mark(draw, f, low, cues, dh)
     if f.sign:
         mid = (v0 + v1) / 2
         if is_alley(f.sign):
@@ -144,7 +174,7 @@ def _side_front(draw: ImageDraw.ImageDraw, cam: Camera, rng: random.Random, f: F
     quad = [cam.project(x, 0, z0), cam.project(x, h, z0), cam.project(x, h, z1), cam.project(x, 0, z1)]
     draw_facade(draw, quad, f.style, rng, floors=max(3, int(h / 4)), wall=MATERIAL_WORDS.get(material_of(f.hint)))
     low = [cam.project(x, 0, z0), cam.project(x, dh, z0), cam.project(x, dh, z1), cam.project(x, 0, z1)]
-    _mark(draw, f, low, cues)
+    _mark(draw, f, low, cues, dh)
     if f.sign:
         zm = (z0 + z1) / 2
         if is_alley(f.sign):  # the street sign on its pole at the alley's mouth, by the kerb
@@ -197,7 +227,8 @@ def _park(draw: ImageDraw.ImageDraw, scene: Scene, cam: Camera, rng: random.Rand
         x_edge = cam.project(sgn * (ROAD_HALF_M + 2.0), 0, PARK_Z_M)[0]
         band = [x_edge, h - 14, cam.width if sgn > 0 else 0, h]
         draw.rectangle([min(band[0], band[2]), band[1], max(band[0], band[2]), band[3]], fill=(150, 150, 146))
-        draw.polygon([cam.project(sgn * (ROAD_HALF_M + 2.0), 0, 2.0), cam.project(sgn * (ROAD_HALF_M + 2.0), 0, PARK_Z_M),
+        kerb = sgn * (ROAD_HALF_M + 2.0)
+        draw.polygon([cam.project(kerb, 0, 2.0), cam.project(kerb, 0, PARK_Z_M),
                       cam.project(sgn * 200, 0, PARK_Z_M), cam.project(sgn * 200, 0, 2.0)], fill=LAWN)
         centre_x, z_mid = sgn * 22.0, 30.0
     else:
@@ -223,7 +254,8 @@ def _park(draw: ImageDraw.ImageDraw, scene: Scene, cam: Camera, rng: random.Rand
         bx, by = cam.project(centre_x + 4, 0, z_mid + 12)
         _, ty = cam.project(centre_x + 4, 9.0, z_mid + 12)
         w = 0.9 * cam.focal / (z_mid + 12)
-        draw.polygon([(bx - w, by), (bx + w, by), (bx + w * 0.5, ty + w), (bx, ty), (bx - w * 0.5, ty + w)], fill=MONUMENT)
+        draw.polygon([(bx - w, by), (bx + w, by), (bx + w * 0.5, ty + w), (bx, ty), (bx - w * 0.5, ty + w)],
+                     fill=MONUMENT)
         cues.add(f"park:{f.place_id}:monument")
     trees = [(centre_x + rng.uniform(-24, 24), rng.uniform(12, 60)) for _ in range(8)]
     if scene.road_ahead:

@@ -23,7 +23,7 @@ from ewa_mcp.street_drawing.compass import draw_compass_strip
 from ewa_mcp.street_drawing.png import encode_png
 from ewa_mcp.street_drawing.sky import sky_gradient
 from ewa_mcp.street_drawing.text import bundled_font
-from .scene import MATERIAL_WORDS, SKYLINE_SHOWN, Frontage, Scene, details_of, has_look, material_of
+from .scene import MATERIAL_WORDS, OPEN_SPACE_KINDS, SKYLINE_SHOWN, Frontage, Scene, details_of, has_look, material_of
 
 WIDTH, HEIGHT = 480, 330  # large enough for a lion by a door or a clock on a tower to read
 CAMERA_HEIGHT_M = 1.7
@@ -468,6 +468,16 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
         if side == "ahead" and lm is not None:  # a front facing the camera, at the place's bearing
             z = max((z0 + z1) / 2, 8.0)
             cx = z * math.tan(math.radians(lm.rel_angle))
+            if lm.kind in OPEN_SPACE_KINDS:  # a park ahead: a lawn with trees at its bearing, no front
+                draw.polygon([cam.project(cx - 12, 0, z), cam.project(cx - 12, 0, z + 30), cam.project(cx + 12, 0, z + 30),
+                              cam.project(cx + 12, 0, z)], fill=(96, 150, 72))
+                for tx in (cx - 8, cx, cx + 8):
+                    _park_stretch(draw, cam, tx, z + 2, z + 12, lawn=False)
+                low = [cam.project(cx - 12, 0, z), cam.project(cx - 12, 8.0, z), cam.project(cx + 12, 8.0, z),
+                       cam.project(cx + 12, 0, z)]
+                cues.add(f"facade:{lm.place_id}")
+                cues |= {f"detail:{lm.place_id}:{d}" for d in draw_details(draw, low, lm.hint)}
+                continue
             height = min(80.0, max(18.0, lm.height_m or 30.0))
             if windows and not lm.height_m:
                 height = _capped_height(height, cam, None, z, z, windows)
@@ -478,6 +488,12 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
             cues |= {f"detail:{lm.place_id}:{d}" for d in draw_details(draw, quad, lm.hint)}
             continue
         x = FACADE_X_M if side == "right" else -FACADE_X_M
+        if lm is not None and lm.kind in OPEN_SPACE_KINDS:  # a park along the street: lawn and trees, no front
+            _park_stretch(draw, cam, x, z0, z1)
+            low = [cam.project(x, 0, z0), cam.project(x, 8.0, z0), cam.project(x, 8.0, z1), cam.project(x, 0, z1)]
+            cues.add(f"facade:{lm.place_id}")
+            cues |= {f"detail:{lm.place_id}:{d}" for d in draw_details(draw, low, lm.hint)}
+            continue
         height = rng.uniform(12, 40) if lm is None else min(80.0, max(18.0, (lm.height_m or 30.0)))
         if windows and (lm is None or not lm.height_m):  # a place of unknown height is no taller than needed
             height = _capped_height(height, cam, x, z0, z1, windows)
@@ -504,6 +520,25 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
             cues.add(f"skyline:{item.place_id}")
     draw_compass_strip(draw, cam.width, cam.height, scene.heading)
     return img, frozenset(cues)
+
+
+def _park_stretch(draw: ImageDraw.ImageDraw, cam: Camera, x: float, z0: float, z1: float,
+                  lawn: bool = True) -> None:
+    """A park beside the street between depths z0 and z1: lawn from the kerb back, a row of trees along it
+    (``lawn`` False: the trees only)."""
+    sgn = 1.0 if x > 0 else -1.0
+    kerb = sgn * (ROAD_HALF_M + 2.0)
+    if lawn:
+        draw.polygon([cam.project(kerb, 0, z0), cam.project(kerb, 0, z1), cam.project(sgn * 80, 0, z1),
+                      cam.project(sgn * 80, 0, z0)], fill=(96, 150, 72))
+    z = z1 - 3.0
+    while z > z0:
+        bx, by = cam.project(x, 0, z)
+        _, ty = cam.project(x, 5.0, z)
+        r = 3.4 * cam.focal / z
+        draw.line([(bx, by), (bx, ty)], fill=(90, 64, 44), width=max(1, int(r / 4)))
+        draw.ellipse([bx - r, ty - r * 1.4, bx + r, ty + r * 0.4], fill=(52, 112, 56))
+        z -= 9.0
 
 
 def _open_ground(draw: ImageDraw.ImageDraw, cam: Camera, rng: random.Random) -> None:
