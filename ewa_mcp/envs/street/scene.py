@@ -7,6 +7,7 @@ text-only and vision agents observe the same world.
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import math
 import re
@@ -346,6 +347,7 @@ PARK_WORDS = {"paths": ("path", "walk", "promenade"), "pond": ("pond", "lake", "
               "fountain": ("fountain",), "monument": ("monument", "statue", "obelisk", "memorial")}
 
 
+@functools.lru_cache(maxsize=4096)
 def material_of(hint: str) -> str:
     """The first building material a description names ("" for none)."""
     text = hint.lower()
@@ -394,10 +396,15 @@ def here_cues(scene: Scene) -> frozenset[str]:
             cues.add(f"material:{f.place_id}:{material_of(f.hint)}")
     return frozenset(cues)
 
-def details_of(hint: str) -> set[str]:
+# words match from their start: "pavilion" holds no lion and "street" no tree
+_DETAIL_RES = {name: re.compile("|".join(r"\b" + re.escape(w) for w in words)) for name, words in DETAIL_WORDS.items()}
+
+
+@functools.lru_cache(maxsize=4096)
+def details_of(hint: str) -> frozenset[str]:
+    """The details a description names (cached: every view of every place asks again)."""
     text = hint.lower()
-    # words match from their start: "pavilion" holds no lion and "street" no tree
-    return {name for name, words in DETAIL_WORDS.items() if any(re.search(r"\b" + re.escape(w), text) for w in words)}
+    return frozenset(name for name, pattern in _DETAIL_RES.items() if pattern.search(text))
 
 
 def text_cues(scene: Scene) -> frozenset[str]:

@@ -149,7 +149,7 @@ def draw_details(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], hin
     """Draw on a facade quadrilateral the visible details its description names (lions by the door, a
     clock, a dome, a statue on top, a spire, columns, an arched door, steps, neon, an awning, globe
     lamps, trees, twin towers, flags), so a vision agent sees what the text tells."""
-    found = details_of(hint)
+    found = set(details_of(hint))
     if not found:
         return set()
     (bx0, by0), (tx0, ty0), (tx1, ty1), (bx1, by1) = quad
