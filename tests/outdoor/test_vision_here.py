@@ -13,7 +13,7 @@ import pytest
 from ewa_mcp.core.services import Services
 from ewa_mcp.core.taskmodel import Task
 from ewa_mcp.envs.street.env import StreetEnvironment
-from ewa_mcp.envs.street.here_view import LAWN, POND, STREET_SIGN
+from ewa_mcp.envs.street.here_view import LAWN, POND, RAILING, STREET_SIGN
 from ewa_mcp.envs.street.scene import compute_scene, describe, here_cues, places_here, sign_colour_of, text_cues
 from ewa_mcp.envs.street.street_view import render_cues
 
@@ -107,6 +107,16 @@ def test_a_small_alley_has_its_street_sign_and_its_look(world):
     pid = "poi-philadelphia-elfreths-alley"
     assert {"sign:Elfreth's Alley", f"material:{pid}:brick", f"detail:{pid}:shutters", f"detail:{pid}:flowers"} <= drawn
     assert pixels(img, STREET_SIGN) >= 150
+
+
+def test_a_subway_entrance_is_a_stairway_in_the_sidewalk_with_its_name_board(world):
+    pid = "poi-manhattan-23-st-station-eighth-avenue"
+    scene, img, drawn = facing_view(world, pid)
+    assert {"sign:23 St station (Eighth Avenue)", f"detail:{pid}:lamps", f"here:{pid}"} <= drawn
+    assert pixels(img, RAILING) >= 100
+    graph, i = world.locate(world.places[pid].node)
+    away = compute_scene(world, graph, i, scene.heading + 180.0, "back")
+    assert pixels(render_cues(away)[0], RAILING) == 0  # the railings belong to the view facing it
 
 
 def test_a_landmark_carries_no_name_only_its_look(world):

@@ -39,6 +39,7 @@ DETAIL_H_M = 16.0  # the height of the part of a front its details are drawn on 
 LAWN, PATH, POND, TRUNK, LEAVES = (96, 150, 72), (214, 200, 168), (70, 128, 188), (90, 64, 44), (52, 112, 56)
 FOUNTAIN, MONUMENT, STREET_SIGN = (236, 242, 246), (200, 196, 186), (18, 110, 58)
 SHOP_GLASS = (150, 190, 210)  # a lit shop window
+RAILING = (36, 60, 44)
 
 
 def park_here(scene: Scene) -> Frontage | None:
@@ -52,7 +53,8 @@ def blocked_near(scene: Scene) -> dict[str, float]:
     if not scene.road_ahead:
         return out
     for f in scene.here:
-        out[f.side] = max(out[f.side], PARK_Z_M if f.kind in OPEN_SPACE_KINDS else SIDE_Z[1])
+        if not sidewalk_entrance(f):  # a stairway down stands in front of the ordinary fronts
+            out[f.side] = max(out[f.side], PARK_Z_M if f.kind in OPEN_SPACE_KINDS else SIDE_Z[1])
     return out
 
 
@@ -127,7 +129,7 @@ def _shopfront(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], heigh
 
 def _mark(draw: ImageDraw.ImageDraw, f: Frontage, quad: list[tuple[float, float]], cues: set[str],
           height_m: float) -> None:
-    if f.kind in SIGN_KINDS and not is_alley(f.sign or ""):
+    if f.kind in SIGN_KINDS - {"station"}:
         _shopfront(draw, quad, height_m)
     cues.add(f"here:{f.place_id}")
     cues.add(f"facade:{f.place_id}")
@@ -136,9 +138,43 @@ def _mark(draw: ImageDraw.ImageDraw, f: Frontage, quad: list[tuple[float, float]
         cues.add(f"material:{f.place_id}:{material_of(f.hint)}")
 
 
+def sidewalk_entrance(f: Frontage) -> bool:
+    """A subway entrance: stairs down from the sidewalk (no building front of its own)."""
+    text = f.hint.lower()
+    return f.kind == "station" and "stair" in text and " down" in text
+
+
+def _stairway(draw: ImageDraw.ImageDraw, cam: Camera, f: Frontage, x: float, z: float, cues: set[str]) -> None:
+    """A stairway down through the sidewalk at (x, z): the dark opening, its steps, railings on three sides,
+    and the station's name board on a post; the details its description names (globe lamps) beside it."""
+    w, d, rail = 1.6, 5.0, 1.1
+    draw.polygon([cam.project(x - w, 0, z), cam.project(x + w, 0, z), cam.project(x + w, 0, z + d),
+                  cam.project(x - w, 0, z + d)], fill=(46, 46, 50))
+    for k in range(1, 8):
+        zz = z + d * k / 8
+        draw.line([cam.project(x - w, 0, zz), cam.project(x + w, 0, zz)], fill=(120, 120, 124), width=1)
+    for a, b in (((x - w, z), (x - w, z + d)), ((x + w, z), (x + w, z + d)), ((x - w, z + d), (x + w, z + d))):
+        draw.line([cam.project(a[0], rail, a[1]), cam.project(b[0], rail, b[1])], fill=RAILING, width=3)
+        for t in (0.0, 0.5, 1.0):
+            px, pz = a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t
+            draw.line([cam.project(px, 0, pz), cam.project(px, rail, pz)], fill=RAILING, width=2)
+    post = x + w + 0.4
+    draw.line([cam.project(post, 0, z), cam.project(post, 3.2, z)], fill=RAILING, width=3)
+    around = [cam.project(x - w - 1.5, 0, z), cam.project(x - w - 1.5, 6.0, z), cam.project(x + w + 1.5, 6.0, z),
+              cam.project(x + w + 1.5, 0, z)]
+    cues.add(f"here:{f.place_id}")
+    cues.add(f"facade:{f.place_id}")
+    cues |= {f"detail:{f.place_id}:{d}" for d in draw_details(draw, around, f.hint, door=False)}
+    if f.sign:
+        _board(draw, cam, f, cam.project(post, 3.6, z), cues)
+
+
 def _facing_front(draw: ImageDraw.ImageDraw, cam: Camera, rng: random.Random, f: Frontage, x0: float, x1: float,
                   cues: set[str], windows: list[tuple[float, float, float]]) -> None:
     """A place straight across the sidewalk: its front facing the camera over the world span x0..x1."""
+    if sidewalk_entrance(f):  # on the sidewalk in front of the building fronts
+        _stairway(draw, cam, f, (x0 + x1) / 2 * 0.7, FRONT_Z_M * 0.7, cues)
+        return
     z = FRONT_Z_M
     h = _height(f, cam, z)
     if windows:  # no taller than leaves the far towers the text names in sight over its roof
@@ -167,6 +203,9 @@ def _side_front(draw: ImageDraw.ImageDraw, cam: Camera, rng: random.Random, f: F
                 z1: float, cues: set[str], windows: list[tuple[float, float, float]]) -> None:
     """A place beside a street that goes on ahead: its front on that side's facade plane, near."""
     x = FACADE_X_M if side == "right" else -FACADE_X_M
+    if sidewalk_entrance(f):
+        _stairway(draw, cam, f, x * 0.8, z0 + 1.0, cues)  # mid-sidewalk, near
+        return
     h = _height(f, cam, z0)
     if windows:
         h = _capped_height(h, cam, x, z0, z1, windows)

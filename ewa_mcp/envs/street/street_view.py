@@ -145,7 +145,7 @@ GOLD, BRONZE, NEON, LION = (212, 175, 55), (140, 100, 50), (255, 60, 90), (222, 
 SHUTTER, FLOWER, TIMBER, IRON = (40, 70, 50), (220, 60, 120), (60, 40, 30), (30, 30, 34)
 
 
-def draw_details(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], hint: str) -> set[str]:
+def draw_details(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], hint: str, door: bool = True) -> set[str]:
     """Draw on a facade quadrilateral the visible details its description names (lions by the door, a
     clock, a dome, a statue on top, a spire, columns, an arched door, steps, neon, an awning, globe
     lamps, trees, twin towers, flags), so a vision agent sees what the text tells."""
@@ -173,11 +173,11 @@ def draw_details(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], hin
             t = 0.15 + 0.7 * k / 6
             draw.line([at(t, 0.02), at(t, 0.45)], fill=(245, 242, 232), width=max(2, int(unit * 0.5)))
         draw.polygon([at(0.12, 0.45), at(0.88, 0.45), at(mid, 0.58)], fill=(236, 232, 220), outline=(120, 120, 120))
-    if "arch" in found or "lions" in found or "steps" in found:
+    if door and ("arch" in found or "lions" in found or "steps" in found):  # door False: an opening of its own
         x, y = at(mid, 0.0)
         draw.rectangle([x - unit * 1.2, y - unit * 2.2, x + unit * 1.2, y], fill=(40, 36, 34))
         draw.ellipse([x - unit * 1.2, y - unit * 3.4, x + unit * 1.2, y - unit * 1.0], fill=(40, 36, 34))
-    if "steps" in found:
+    if "steps" in found and door:
         x, y = at(mid, 0.0)
         for k in range(3):
             draw.rectangle([x - unit * (3 - k * 0.5), y - unit * 0.3 * (k + 1), x + unit * (3 - k * 0.5),
