@@ -65,11 +65,29 @@ def goal_nodes(domain: str, count: int) -> list[str]:
     return random.Random(domain).sample(sorted(set(goals)), min(count, len(set(goals))))
 
 
+def check_approach(world, node_id: str) -> list[str]:
+    """From each neighbouring node, facing the goal: what the text names there (the goal's places among
+    them, seen along the street) is drawn."""
+    graph, i = world.locate(node_id)
+    problems = []
+    for j, _, _, _ in graph.adj[i]:
+        back = next((h for k, _, _, h in graph.adj[j] if k == i), None)
+        if back is None:
+            continue
+        scene = compute_scene(world, graph, j, back, "front")
+        missing = text_cues(scene) - render_cues(scene)[1]
+        missing -= {c for c in render_cues(replace(scene, here=[]))[1] ^ text_cues(replace(scene, here=[]))
+                    if c.startswith("skyline:")}
+        if missing:
+            problems.append(f"{graph.ids[j]} towards {node_id}: not drawn {sorted(missing)}")
+    return problems
+
+
 @pytest.mark.parametrize("domain", ["navigation", "shopping", "traveling"])
-def test_the_goal_of_a_sample_of_tasks_is_drawn_there(world, domain):
+def test_the_goal_of_a_sample_of_tasks_is_drawn_there_and_on_the_way_in(world, domain):
     nodes = goal_nodes(domain, 25)
     assert nodes
-    problems = [p for node in nodes for p in check_node(world, node, 17.0)]
+    problems = [p for node in nodes for p in check_node(world, node, 17.0) + check_approach(world, node)]
     assert not problems, problems[:8]
 
 
