@@ -25,7 +25,7 @@ def stats(values: list[float], unit: str = "ms") -> str:
     return f"p50 {int(statistics.median(v))} B, p95 {int(p95)} B, max {int(v[-1])} B"
 
 
-def bench_street(n: int, rng: random.Random) -> None:
+def bench_street(n: int, rng: random.Random, at_places: bool = False) -> None:
     from ewa_mcp.envs.street.scene import compute_scene
     from ewa_mcp.envs.street.street_view import render
     from ewa_mcp.street_drawing.png import encode_png
@@ -35,7 +35,9 @@ def bench_street(n: int, rng: random.Random) -> None:
     views = []
     for city in sorted(world.cities_by_name):
         g = world.city(city)
-        for node in rng.sample(g.ids, max(1, n // (4 * len(world.cities_by_name)))):
+        # --at-places: the nodes places stand at, whose views draw the place close up (vision "Right here")
+        pool = sorted({p.node for p in world.places.values() if p.city == g.city}) if at_places else g.ids
+        for node in rng.sample(pool, min(len(pool), max(1, n // (4 * len(world.cities_by_name))))):
             views.append((g, g.index[node]))
     draw_t, whole_t, sizes, obs = [], [], [], []
     for g, i in views:
@@ -52,7 +54,8 @@ def bench_street(n: int, rng: random.Random) -> None:
             sizes.append(len(png))
             per_obs += len(png)
         obs.append(per_obs)
-    print(f"street view 480x330 ({len(sizes)} views in {len(world.cities_by_name)} cities)")
+    where = "at place nodes" if at_places else "at random nodes"
+    print(f"street view 480x330 ({len(sizes)} views {where} in {len(world.cities_by_name)} cities)")
     print(f"  drawing: {stats(draw_t)}; drawing + PNG: {stats(whole_t)}")
     print(f"  PNG bytes per view: {stats(sizes, 'B')}")
     print(f"  image bytes per observation (4 views): {stats(obs, 'B')}")
@@ -92,10 +95,12 @@ def bench_geo(n: int, rng: random.Random) -> None:
 def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--views", type=int, default=120, help="about how many views per world")
+    parser.add_argument("--at-places", action="store_true", help="street views only, at the nodes places stand at")
     args = parser.parse_args()
     rng = random.Random(0)
-    bench_street(args.views, rng)
-    bench_geo(args.views, rng)
+    bench_street(args.views, rng, args.at_places)
+    if not args.at_places:
+        bench_geo(args.views, rng)
     print(f"load average: {' '.join(f'{v:.2f}' for v in os.getloadavg())} on {os.cpu_count()} CPUs")
 
 

@@ -64,6 +64,6 @@ def test_the_details_a_description_names_are_drawn(world):
     assert "lions" in describe(scene)
     lion_pixels = sum(n for n, colour in render(scene).getcolors(maxcolors=1 << 16) if colour == LION)
     assert lion_pixels > 400
-    for f in scene.frontages:
+    for f in scene.frontages + scene.here:  # the place drawn close up at its node reads the hint too
         f.hint = "a plain building"
     assert not any(colour == LION for _, colour in render(scene).getcolors(maxcolors=1 << 16))

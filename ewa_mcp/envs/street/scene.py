@@ -7,8 +7,10 @@ text-only and vision agents observe the same world.
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import math
+import re
 from dataclasses import dataclass, field
 
 from ewa_mcp.geometry import angle_diff, bearing_deg, cardinal_word, haversine_m, offset_flat
@@ -75,6 +77,9 @@ class Scene:
     street_signs: list[str] = field(default_factory=list)
     open_space: str = ""  # a park's look where it lies across the sidewalk this way ("" for none)
     seed: int = 0
+    # The places at this very node whose entrance lies within HERE_HALF_ANGLE of this view: what the text
+    # mode's "Right here:" line names, drawn close up facing the camera (describe never reads this).
+    here: list[Frontage] = field(default_factory=list)
 
 
 def _style(p: Place) -> str:
@@ -111,6 +116,28 @@ def places_here(world: World, graph: CityGraph, i: int, heading: float) -> list[
                     else "on your right" if rel > 0 else "on your left")
         what = what_is_seen(p.kind, p.name if p.kind in SIGN_KINDS else None, p.description_hint)
         out.append(f"{side}, {what}.")
+    return out
+
+
+HERE_HALF_ANGLE = 45.0  # four views 90° apart: each place at a node falls in (at least) one of them
+
+
+def places_in_view_here(world: World, graph: CityGraph, i: int, heading: float) -> list[Frontage]:
+    """The places whose entrance is at this node (those places_here words) and lies this way: the vision
+    mode's counterpart of "Right here:", so a walker can confirm arrival from the picture alone."""
+    out = []
+    for p in sorted(world.places_near(graph.ids[i]), key=lambda p: p.id):
+        towards = (p.heading_from_node if p.heading_from_node is not None
+                   else bearing_deg(graph.lat[i], graph.lng[i], p.lat, p.lng))
+        rel = angle_diff(towards, heading)
+        if abs(rel) > HERE_HALF_ANGLE:
+            continue
+        height = p.facts.get("height_m")
+        d = min(p.offset_m, ENTRANCE_SETBACK_M) if p.heading_from_node is not None else 0.0
+        out.append(Frontage("right" if rel >= 0 else "left", round(d * math.cos(math.radians(rel)), 1),
+                            round(abs(d * math.sin(math.radians(rel))), 1), round(d, 1), round(rel, 1), p.kind,
+                            p.name if p.kind in SIGN_KINDS or is_alley(p.name) else None, _style(p),
+                            float(height) if height else None, p.description_hint, p.id))
     return out
 
 
@@ -201,6 +228,7 @@ def compute_scene(world: World, graph: CityGraph, i: int, heading: float, label:
             scene.skyline.append(SkylineItem(round(rel, 1), round(d, 1), float(height), _style(p),
                                              p.description_hint, p.id))
     scene.open_space = open_space_this_way(world, graph, i, heading)
+    scene.here = places_in_view_here(world, graph, i, heading)
     scene.skyline = _unhidden(scene.skyline)
     if not scene.road_ahead and not scene.open_space:
         scene.skyline = []  # building fronts across the sidewalk, a few metres away, hide every far tower
@@ -299,11 +327,84 @@ DETAIL_WORDS = {
     "arch": ("arched", "arches", "archway"), "steps": ("steps", "stairs", "stairway", "staircase"),
     "neon": ("neon",), "awning": ("awning", "canopy", "marquee"), "lamps": ("globe lamp", "lamps"),
     "trees": ("tree", "park", "garden", "lawn"), "twin": ("twin",), "flags": ("flag",),
+    "cupola": ("cupola",), "fence": ("fence", "railing"), "gables": ("gable", "half-timber"),
+    "stained": ("stained glass", "stained-glass"), "shutters": ("shutter",), "flowers": ("flower box", "window box"),
 }
 
-def details_of(hint: str) -> set[str]:
+# The words of a description naming what a front is built of -> the wall colour it is drawn in (where its
+# style has no palette of its own): "colonial brick" reads as brick in the picture too.
+MATERIAL_WORDS = {
+    "brownstone": (112, 76, 60), "sandstone": (206, 182, 140), "limestone": (224, 216, 198),
+    "marble": (238, 236, 230), "granite": (150, 146, 142), "terracotta": (196, 120, 84), "brick": (156, 74, 54),
+    "glass": (124, 162, 190), "steel": (140, 150, 160), "concrete": (160, 158, 152), "stone": (186, 180, 168),
+}
+COLOUR_WORDS = {
+    "red": (190, 28, 36), "blue": (28, 70, 160), "green": (20, 118, 64), "yellow": (226, 184, 20),
+    "orange": (220, 110, 20), "purple": (110, 40, 120), "black": (28, 28, 28), "white": (244, 244, 240),
+}
+# Things a park's description names, drawn in its picture (lawns and trees always: a park is drawn as one).
+PARK_WORDS = {"paths": ("path", "walk", "promenade"), "pond": ("pond", "lake", "lagoon", "reflecting pool"),
+              "fountain": ("fountain",), "monument": ("monument", "statue", "obelisk", "memorial")}
+
+
+@functools.lru_cache(maxsize=4096)
+def material_of(hint: str) -> str:
+    """The first building material a description names ("" for none)."""
     text = hint.lower()
-    return {name for name, words in DETAIL_WORDS.items() if any(w in text for w in words)}
+    found = [(text.find(w), w) for w in MATERIAL_WORDS if w in text]
+    return min(found)[1] if found else ""
+
+
+def sign_colour_of(hint: str) -> tuple[int, int, int] | None:
+    """The colour a description gives a shop's sign or logo ("a red sign", "a red bullseye logo")."""
+    m = re.search(r"\b(" + "|".join(COLOUR_WORDS) + r")(?:[- ]\w+)?[- ](?:sign|logo|lettering|letters|canopy)",
+                  hint.lower())
+    return COLOUR_WORDS[m.group(1)] if m else None
+
+
+def park_features(hint: str) -> set[str]:
+    text = hint.lower()
+    return {"lawn", "trees"} | {name for name, words in PARK_WORDS.items() if any(w in text for w in words)}
+
+
+def has_look(f: Frontage) -> bool:
+    """Whether a place's front is drawn in its own look (a style, a named detail or a material)."""
+    return bool(f.style or details_of(f.hint) or material_of(f.hint))
+
+
+def is_alley(name: str) -> bool:
+    """A small named street that is a place of its own (its street sign stands at its mouth)."""
+    return bool(re.search(r"\b(alley|mews|lane)$", name.lower()))
+
+
+def here_cues(scene: Scene) -> frozenset[str]:
+    """The ids of what a view must draw for the places at its node that lie this way (scene.here), the
+    picture's counterpart of the text's "Right here:" line: the place itself, close and facing the
+    camera; a shop's sign; a park's lawns, trees and what its description adds; a building's material
+    and the details its description names; a small street's own sign."""
+    cues: set[str] = set()
+    for f in scene.here:
+        cues.add(f"here:{f.place_id}")
+        if f.sign:
+            cues.add(f"sign:{f.sign}")
+        if f.kind in OPEN_SPACE_KINDS:
+            cues |= {f"park:{f.place_id}:{x}" for x in park_features(f.hint)}
+            continue
+        cues.add(f"facade:{f.place_id}")
+        cues |= {f"detail:{f.place_id}:{d}" for d in details_of(f.hint)}
+        if material_of(f.hint):
+            cues.add(f"material:{f.place_id}:{material_of(f.hint)}")
+    return frozenset(cues)
+
+# words match from their start: "pavilion" holds no lion and "street" no tree
+_DETAIL_RES = {name: re.compile("|".join(r"\b" + re.escape(w) for w in words)) for name, words in DETAIL_WORDS.items()}
+
+
+@functools.lru_cache(maxsize=4096)
+def details_of(hint: str) -> frozenset[str]:
+    """The details a description names (cached: every view of every place asks again)."""
+    text = hint.lower()
+    return frozenset(name for name, pattern in _DETAIL_RES.items() if pattern.search(text))
 
 
 def text_cues(scene: Scene) -> frozenset[str]:
@@ -315,13 +416,14 @@ def text_cues(scene: Scene) -> frozenset[str]:
         cues |= {f"opening:{o.side}:{round(o.distance_m)}" for o in scene.openings[:3]}
     elif scene.open_space:
         cues.add("open_space")
+    here = {f.place_id for f in scene.here}  # drawn close up instead: here_cues names what they show
     for f in scene.frontages[:5]:
         if f.sign:
             cues.add(f"sign:{f.sign}")
-        if f.style or details_of(f.hint):
+        if has_look(f) and f.place_id not in here:
             cues.add(f"facade:{f.place_id}")
             cues |= {f"detail:{f.place_id}:{d}" for d in details_of(f.hint)}
     for item in sorted(scene.skyline, key=lambda s: s.distance_m)[:2]:
         cues.add(f"skyline:{item.place_id}")
     cues |= {f"street_sign:{name}" for name in scene.street_signs}
-    return frozenset(cues)
+    return frozenset(cues) | here_cues(scene)

@@ -23,7 +23,7 @@ from ewa_mcp.street_drawing.compass import draw_compass_strip
 from ewa_mcp.street_drawing.png import encode_png
 from ewa_mcp.street_drawing.sky import sky_gradient
 from ewa_mcp.street_drawing.text import bundled_font
-from .scene import SKYLINE_SHOWN, Frontage, Scene, details_of
+from .scene import MATERIAL_WORDS, OPEN_SPACE_KINDS, SKYLINE_SHOWN, Frontage, Scene, details_of, has_look, material_of
 
 WIDTH, HEIGHT = 480, 330  # large enough for a lion by a door or a clock on a tower to read
 CAMERA_HEIGHT_M = 1.7
@@ -77,10 +77,13 @@ STREET_CAMERA = Camera(width=WIDTH, height=HEIGHT, horizon=HEIGHT * 0.46, eye_he
 
 
 def draw_facade(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], style: str, rng: random.Random,
-                base: tuple[int, int, int] | None = None, floors: int = 6) -> None:
-    """Fill a facade quadrilateral (bottom-near, top-near, top-far, bottom-far) with a style pattern."""
+                base: tuple[int, int, int] | None = None, floors: int = 6,
+                wall: tuple[int, int, int] | None = None) -> None:
+    """Fill a facade quadrilateral (bottom-near, top-near, top-far, bottom-far) with a style pattern; ``wall``
+    (the material its description names) overrides the style's wall colour."""
     key = _style_key(style)
     main, trim = STYLE_PALETTES.get(key, (base or rng.choice(WALL_TONES), (60, 60, 64)))
+    main = wall or main
     draw.polygon(quad, fill=main, outline=trim)
     (bx0, by0), (tx0, ty0), (tx1, ty1), (bx1, by1) = quad
 
@@ -139,13 +142,14 @@ def draw_facade(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], styl
 
 # Details a place's description mentions, drawn on its facade (first matching word wins per detail).
 GOLD, BRONZE, NEON, LION = (212, 175, 55), (140, 100, 50), (255, 60, 90), (222, 214, 196)
+SHUTTER, FLOWER, TIMBER, IRON = (40, 70, 50), (220, 60, 120), (60, 40, 30), (30, 30, 34)
 
 
-def draw_details(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], hint: str) -> set[str]:
+def draw_details(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], hint: str, door: bool = True) -> set[str]:
     """Draw on a facade quadrilateral the visible details its description names (lions by the door, a
     clock, a dome, a statue on top, a spire, columns, an arched door, steps, neon, an awning, globe
     lamps, trees, twin towers, flags), so a vision agent sees what the text tells."""
-    found = details_of(hint)
+    found = set(details_of(hint))
     if not found:
         return set()
     (bx0, by0), (tx0, ty0), (tx1, ty1), (bx1, by1) = quad
@@ -169,11 +173,11 @@ def draw_details(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], hin
             t = 0.15 + 0.7 * k / 6
             draw.line([at(t, 0.02), at(t, 0.45)], fill=(245, 242, 232), width=max(2, int(unit * 0.5)))
         draw.polygon([at(0.12, 0.45), at(0.88, 0.45), at(mid, 0.58)], fill=(236, 232, 220), outline=(120, 120, 120))
-    if "arch" in found or "lions" in found or "steps" in found:
+    if door and ("arch" in found or "lions" in found or "steps" in found):  # door False: an opening of its own
         x, y = at(mid, 0.0)
         draw.rectangle([x - unit * 1.2, y - unit * 2.2, x + unit * 1.2, y], fill=(40, 36, 34))
         draw.ellipse([x - unit * 1.2, y - unit * 3.4, x + unit * 1.2, y - unit * 1.0], fill=(40, 36, 34))
-    if "steps" in found:
+    if "steps" in found and door:
         x, y = at(mid, 0.0)
         for k in range(3):
             draw.rectangle([x - unit * (3 - k * 0.5), y - unit * 0.3 * (k + 1), x + unit * (3 - k * 0.5),
@@ -209,7 +213,46 @@ def draw_details(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], hin
             x, y = at(t, 0.62)
             draw.line([(x, y), (x + unit * 2, y - unit)], fill=(60, 60, 60), width=1)
             draw.rectangle([x + unit * 1.2, y - unit * 1.8, x + unit * 2.4, y - unit * 1.0], fill=(30, 60, 160))
+    if "shutters" in found or "flowers" in found or "stained" in found:
+        for f in (0.3, 0.55, 0.8):  # three rows of windows, each with what the description names
+            for t in (0.2, 0.4, 0.6, 0.8):
+                x, y = at(t, f)
+                w = unit * 0.55
+                glass = (150, 60, 120) if "stained" in found else (50, 60, 76)
+                draw.rectangle([x - w, y - unit * 1.2, x + w, y], fill=glass)
+                if "stained" in found:
+                    draw.rectangle([x - w, y - unit * 0.6, x + w, y], fill=(60, 120, 200))
+                    draw.line([(x, y - unit * 1.2), (x, y)], fill=(230, 190, 60), width=1)
+                if "shutters" in found:
+                    draw.rectangle([x - w * 2.0, y - unit * 1.2, x - w, y], fill=SHUTTER)
+                    draw.rectangle([x + w, y - unit * 1.2, x + w * 2.0, y], fill=SHUTTER)
+                if "flowers" in found:
+                    draw.rectangle([x - w * 1.2, y, x + w * 1.2, y + unit * 0.35], fill=(110, 70, 40))
+                    for k in range(3):
+                        fx = x - w + k * w
+                        draw.ellipse([fx - unit * 0.25, y - unit * 0.3, fx + unit * 0.25, y + unit * 0.1],
+                                     fill=FLOWER)
+    if "gables" in found:
+        for t0 in (0.05, 0.38, 0.71):  # half-timbered gables along the roof line
+            a, b = at(t0, 1.0), at(t0 + 0.24, 1.0)
+            peak = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2 - unit * 3)
+            draw.polygon([a, b, peak], fill=(236, 226, 200), outline=TIMBER)
+            draw.line([((a[0] + b[0]) / 2, (a[1] + b[1]) / 2), peak], fill=TIMBER, width=2)
+            draw.line([a, peak], fill=TIMBER, width=2)
+            draw.line([b, peak], fill=TIMBER, width=2)
+    if "fence" in found:
+        a, b = at(0.0, 0.0), at(1.0, 0.0)
+        ya = unit * 1.3
+        draw.line([(a[0], a[1] - ya), (b[0], b[1] - ya)], fill=IRON, width=2)
+        for k in range(25):
+            x, y = at(k / 24, 0.0)
+            draw.line([(x, y), (x, y - ya - unit * 0.3)], fill=IRON, width=1)
     top_x, top_y = at(mid, 1.0)
+    if "cupola" in found:  # a small lantern with a domed cap on the roof's middle
+        draw.rectangle([top_x - unit * 0.9, top_y - unit * 2.0, top_x + unit * 0.9, top_y], fill=(240, 238, 230),
+                       outline=(120, 120, 120))
+        draw.pieslice([top_x - unit, top_y - unit * 3.0, top_x + unit, top_y - unit], 180, 360, fill=(90, 130, 110))
+        top_y -= unit * 3.0
     if "twin" in found:
         for t in (0.25, 0.75):
             x, y = at(t, 1.0)
@@ -337,6 +380,11 @@ def _draw_sign(draw: ImageDraw.ImageDraw, cam: Camera, side: str, z: float, text
     cues.add(f"sign:{text}")
 
 
+def _wall(f: Frontage) -> tuple[int, int, int] | None:
+    """The wall colour of the material a place's description names (None: its style's or a random tone)."""
+    return MATERIAL_WORDS.get(material_of(f.hint))
+
+
 def _sign_colour(name: str) -> tuple[int, int, int]:
     palette = [(176, 30, 36), (20, 110, 60), (30, 70, 150), (120, 40, 120), (200, 120, 20), (30, 30, 30)]
     return palette[sum(map(ord, name)) % len(palette)]
@@ -348,6 +396,8 @@ def render(scene: Scene, cam: Camera | None = None) -> Image.Image:
 
 def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, frozenset[str]]:
     """The view and the ids of what it draws (scene.text_cues names the ids the text gives)."""
+    from .here_view import blocked_near, draw_here, park_here  # it draws with this module's facades
+
     cues: set[str] = set()
     cam = cam or STREET_CAMERA
     rng = random.Random(scene.seed)
@@ -375,10 +425,11 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
                 cues.add(f"opening:{o.side}:{round(o.distance_m)}")
         if far < AHEAD_END_WALL:
             _end_wall(draw, cam, far + 12, rng, windows=windows)
-    elif scene.open_space:
+    elif scene.open_space or park_here(scene):
         cues.add("road_ends")
         _open_ground(draw, cam, rng)
-        cues.add("open_space")
+        if scene.open_space:
+            cues.add("open_space")
     else:
         cues.add("road_ends")
         facing = next((f for f in scene.frontages if f.side == "ahead" and f.range_m <= 40), None)
@@ -394,40 +445,61 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
             z = z0
             while z < z1:
                 w = min(z1 - z, rng.uniform(12, 26))
-                lm = next((f for f in landmarks[side] if (f.style or details_of(f.hint))
+                lm = next((f for f in landmarks[side] if has_look(f)
                            and z - 10 <= f.distance_m <= z + w + 10), None)
                 pieces.append((z, side, z, z + w, lm))
                 z += w
     # A described place no street-side piece took (straight ahead, or its entrance in a cross street's
     # gap) still gets its own front, where it stands, so the picture shows what the text names.
-    placed = {lm.place_id for *_, lm in pieces if lm is not None}
+    placed = {lm.place_id for *_, lm in pieces if lm is not None} | {f.place_id for f in scene.here}
     if not scene.road_ahead and not scene.open_space:
         placed |= {f.place_id for f in scene.frontages if f.side == "ahead" and f.range_m <= 40}
     for f in scene.frontages[:5]:
-        if f.place_id in placed or not (f.style or details_of(f.hint)):
+        if f.place_id in placed or not has_look(f):
             continue
         z = min(max(f.distance_m, 4.0), max(far, 4.0))
         pieces.append((z, f.side if f.side != "ahead" else "ahead", z - 8, z + 8, f))
         placed.add(f.place_id)
+    # The places at this node that lie this way replace the ordinary fronts where they stand (here_view).
+    blocked, here_ids = blocked_near(scene), {f.place_id for f in scene.here}
+    pieces = [p for p in pieces if p[1] not in blocked or p[2] >= blocked[p[1]]
+              or (p[4] is not None and p[4].place_id not in here_ids)]
     for _, side, z0, z1, lm in sorted(pieces, key=lambda p: -p[0]):
         if side == "ahead" and lm is not None:  # a front facing the camera, at the place's bearing
             z = max((z0 + z1) / 2, 8.0)
             cx = z * math.tan(math.radians(lm.rel_angle))
+            if lm.kind in OPEN_SPACE_KINDS:  # a park ahead: a lawn with trees at its bearing, no front
+                draw.polygon([cam.project(cx - 12, 0, z), cam.project(cx - 12, 0, z + 30), cam.project(cx + 12, 0, z + 30),
+                              cam.project(cx + 12, 0, z)], fill=(96, 150, 72))
+                for tx in (cx - 8, cx, cx + 8):
+                    _park_stretch(draw, cam, tx, z + 2, z + 12, lawn=False)
+                low = [cam.project(cx - 12, 0, z), cam.project(cx - 12, 8.0, z), cam.project(cx + 12, 8.0, z),
+                       cam.project(cx + 12, 0, z)]
+                cues.add(f"facade:{lm.place_id}")
+                cues |= {f"detail:{lm.place_id}:{d}" for d in draw_details(draw, low, lm.hint)}
+                continue
             height = min(80.0, max(18.0, lm.height_m or 30.0))
             if windows and not lm.height_m:
                 height = _capped_height(height, cam, None, z, z, windows)
             quad = [cam.project(cx - 12, 0, z), cam.project(cx - 12, height, z), cam.project(cx + 12, height, z),
                     cam.project(cx + 12, 0, z)]
-            draw_facade(draw, quad, lm.style, rng, floors=max(3, int(height / 4)))
+            draw_facade(draw, quad, lm.style, rng, floors=max(3, int(height / 4)), wall=_wall(lm))
             cues.add(f"facade:{lm.place_id}")
             cues |= {f"detail:{lm.place_id}:{d}" for d in draw_details(draw, quad, lm.hint)}
             continue
         x = FACADE_X_M if side == "right" else -FACADE_X_M
+        if lm is not None and lm.kind in OPEN_SPACE_KINDS:  # a park along the street: lawn and trees, no front
+            _park_stretch(draw, cam, x, z0, z1)
+            low = [cam.project(x, 0, z0), cam.project(x, 8.0, z0), cam.project(x, 8.0, z1), cam.project(x, 0, z1)]
+            cues.add(f"facade:{lm.place_id}")
+            cues |= {f"detail:{lm.place_id}:{d}" for d in draw_details(draw, low, lm.hint)}
+            continue
         height = rng.uniform(12, 40) if lm is None else min(80.0, max(18.0, (lm.height_m or 30.0)))
         if windows and (lm is None or not lm.height_m):  # a place of unknown height is no taller than needed
             height = _capped_height(height, cam, x, z0, z1, windows)
         quad = [cam.project(x, 0, z0), cam.project(x, height, z0), cam.project(x, height, z1), cam.project(x, 0, z1)]
-        draw_facade(draw, quad, lm.style if lm else "", rng, floors=max(3, int(height / 4)))
+        draw_facade(draw, quad, lm.style if lm else "", rng, floors=max(3, int(height / 4)),
+                    wall=_wall(lm) if lm else None)
         if lm is not None:
             cues.add(f"facade:{lm.place_id}")
             cues |= {f"detail:{lm.place_id}:{d}" for d in draw_details(draw, quad, lm.hint)}
@@ -436,6 +508,7 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
             _draw_sign(draw, cam, f.side, f.distance_m, f.sign, _sign_colour(f.sign), cues)
         elif f.sign and f.side == "ahead":
             _draw_sign(draw, cam, "right", f.distance_m, f.sign, _sign_colour(f.sign), cues)
+    draw_here(draw, scene, cam, rng, cues, windows)
     if scene.street_signs:
         _street_sign(draw, cam, scene.street_signs, cues)
     # A skyline tower counts as drawn only where some of it is still in sight over the nearer roofs.
@@ -447,6 +520,25 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
             cues.add(f"skyline:{item.place_id}")
     draw_compass_strip(draw, cam.width, cam.height, scene.heading)
     return img, frozenset(cues)
+
+
+def _park_stretch(draw: ImageDraw.ImageDraw, cam: Camera, x: float, z0: float, z1: float,
+                  lawn: bool = True) -> None:
+    """A park beside the street between depths z0 and z1: lawn from the kerb back, a row of trees along it
+    (``lawn`` False: the trees only)."""
+    sgn = 1.0 if x > 0 else -1.0
+    kerb = sgn * (ROAD_HALF_M + 2.0)
+    if lawn:
+        draw.polygon([cam.project(kerb, 0, z0), cam.project(kerb, 0, z1), cam.project(sgn * 80, 0, z1),
+                      cam.project(sgn * 80, 0, z0)], fill=(96, 150, 72))
+    z = z1 - 3.0
+    while z > z0:
+        bx, by = cam.project(x, 0, z)
+        _, ty = cam.project(x, 5.0, z)
+        r = 3.4 * cam.focal / z
+        draw.line([(bx, by), (bx, ty)], fill=(90, 64, 44), width=max(1, int(r / 4)))
+        draw.ellipse([bx - r, ty - r * 1.4, bx + r, ty + r * 0.4], fill=(52, 112, 56))
+        z -= 9.0
 
 
 def _open_ground(draw: ImageDraw.ImageDraw, cam: Camera, rng: random.Random) -> None:
@@ -487,7 +579,7 @@ def _street_sign(draw: ImageDraw.ImageDraw, cam: Camera, names: list[str], cues:
     fnt = bundled_font(10)
     x, y = cam.width - 8, 10
     draw.line([(x - 4, y), (x - 4, cam.height * 0.9)], fill=(50, 60, 50), width=3)  # the pole
-    for name in names[:3]:
+    for name in names:  # every name the text's "Street signs here" gives
         w = draw.textlength(name, font=fnt)
         draw.rectangle([x - w - 12, y, x - 2, y + 14], fill=(18, 110, 58), outline=(240, 240, 240))
         draw.text((x - w - 7, y + 1), name, font=fnt, fill=(250, 250, 250))
