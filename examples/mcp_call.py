@@ -8,7 +8,10 @@
     .venv/bin/python examples/mcp_call.py --tools          # every tool with its description
 
 Episodes live in the server, so each call may open a new session. Images in a result are written to
---images DIR (default ./mcp-images) and named in the output.
+--images DIR (default ./mcp-images) and named in the output. Every image gets a name of its own, so a whole
+play-through keeps all its images: NNNN-TOOL-K.png, where NNNN counts up across calls (one more than the highest
+number already in DIR), TOOL is the tool called and K the image's place in that result
+(0001-get_observation-1.png, 0002-browser_scroll-1.png, 0003-browser_scroll-1.png). Names sort in call order.
 """
 
 from __future__ import annotations
@@ -16,11 +19,39 @@ from __future__ import annotations
 import argparse
 import base64
 import json
+import re
 import sys
 from pathlib import Path
 
 import anyio
 from mcp import Client
+
+
+IMAGE_NAME = re.compile(r"^(\d+)-")
+
+
+def save_images(folder: Path, tool: str, images: list[tuple[int, bytes]]) -> list[Path]:
+    """Write one result's images (place in the result, PNG bytes) under names no earlier call used (see the
+    module docstring): they share the next free number, so ``browser_scroll`` twice keeps both screenshots."""
+    if not images:
+        return []
+    folder.mkdir(parents=True, exist_ok=True)
+    taken = [int(m.group(1)) for p in folder.iterdir() if (m := IMAGE_NAME.match(p.name))]
+    number = max(taken, default=0) + 1
+    while True:  # exclusive creation: a call running at the same time never writes over these images
+        first = folder / f"{number:04d}-{tool}-{images[0][0]}.png"
+        try:
+            with first.open("xb") as out:
+                out.write(images[0][1])
+            break
+        except FileExistsError:
+            number += 1
+    paths = [first]
+    for index, data in images[1:]:
+        path = folder / f"{number:04d}-{tool}-{index}.png"
+        path.write_bytes(data)
+        paths.append(path)
+    return paths
 
 
 async def main(args: argparse.Namespace) -> int:
@@ -36,15 +67,13 @@ async def main(args: argparse.Namespace) -> int:
             print(f"arguments must be a JSON object: {exc}", file=sys.stderr)
             return 2
         result = await client.call_tool(args.tool, arguments)
-        images = Path(args.images)
-        for n, item in enumerate(result.content):
+        images = [(n, base64.b64decode(item.data)) for n, item in enumerate(result.content) if item.type == "image"]
+        paths = iter(save_images(Path(args.images), args.tool, images))
+        for item in result.content:
             if item.type == "text":
                 print(item.text)
             elif item.type == "image":
-                images.mkdir(parents=True, exist_ok=True)
-                path = images / f"{args.tool}-{n}.png"
-                path.write_bytes(base64.b64decode(item.data))
-                print(f"[image: {path}]")
+                print(f"[image: {next(paths)}]")
         if result.is_error:
             print("(the tool reported an error)")
         return 1 if result.is_error else 0

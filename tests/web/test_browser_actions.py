@@ -294,12 +294,14 @@ async def test_snapshot_budget_and_screenshot_marks(web_services):
     image = Image.open(io.BytesIO(shot.images[0]))
     assert image.format == "PNG" and image.size == (1280, 720)
     assert shot.data["marks"] >= 10
-    # The mark of a link is a box in its colour around the link (checked on its right edge).
+    # The mark of a link is a box in its colour around the link, just outside it (checked on its right
+    # edge), so it hides nothing of the link itself.
     link = element_id(shot, "link", "Tomato Bruschetta")
     node = next(n for n in env.tabs[0].nodes if env.tabs[0].ref_ids.get(n.ref or "") == link)
     x, y, w, h = node.box
     colour = tuple(int(colour_of(link)[i:i + 2], 16) for i in (1, 3, 5))
-    assert image.convert("RGB").getpixel((x + w - 1, y + h // 2)) == colour
+    assert image.convert("RGB").getpixel((x + w + 2, y + h // 2)) == colour
+    assert image.convert("RGB").getpixel((x + w - 1, y + h // 2)) != colour
     # The overlay existed only for the screenshot.
     assert await env.tabs[0].page.evaluate("document.querySelectorAll('ewa-marks').length") == 0
     await env.close()

@@ -142,7 +142,9 @@ def test_step_viewer_walks_a_recipe_and_emits_every_step(client, event_log):
     first = client.get("/recipe/r001", headers=headers).text
     assert f"Step 1 of {n}" in first
     assert '<button type="button" disabled>Previous step</button>' in first
-    assert 'href="/recipe/r001?step=2" rel="next">Next step</a>' in first
+    # Step links land on the step box (#step), not on the top of the recipe page.
+    assert 'href="/recipe/r001?step=2#step" rel="next">Next step</a>' in first
+    assert '<section class="steps" id="step"' in first
     assert html.escape(recipe["steps"][0]["text"], quote=False) in first
     for k in range(2, n + 1):
         page = client.get(f"/recipe/r001?step={k}", headers=headers).text

@@ -139,8 +139,7 @@ async def collect(session: BrowserSession, tab: Tab, want_image: bool,
                                    count=count and not want_image)
     if not want_image:
         return info, b""
-    marks = render_tree(tab.roots, lambda n: tab.ref_ids[n.ref or ""], title="", viewport=(info[3], info[4])).marks
-    await session.main_world(tab, f"({DRAW_MARKS_JS})({json.dumps(marks_payload(marks))})")
+    await draw_marks(session, tab, info)
     try:
         png = await capture(session, tab)
     finally:
@@ -149,6 +148,13 @@ async def collect(session: BrowserSession, tab: Tab, want_image: bool,
         removal = asyncio.ensure_future(session.main_world(tab, f"({REMOVE_MARKS_JS})()"))
         removal.add_done_callback(lambda f: f.cancelled() or f.exception())
     return info, png
+
+
+async def draw_marks(session: BrowserSession, tab: Tab, info: list[Any]) -> list[list[int]]:
+    """Draw the Set-of-Marks overlay of the tab's latest snapshot (``info``: its page facts) and return where
+    the badges went, as [id, x, y, width, height] in viewport pixels (som.py). REMOVE_MARKS_JS takes it off."""
+    marks = render_tree(tab.roots, lambda n: tab.ref_ids[n.ref or ""], title="", viewport=(info[3], info[4])).marks
+    return list(await session.main_world(tab, f"({DRAW_MARKS_JS})({json.dumps(marks_payload(marks))})") or [])
 
 
 async def capture(session: BrowserSession, tab: Tab) -> bytes:
