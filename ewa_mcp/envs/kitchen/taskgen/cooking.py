@@ -3,7 +3,7 @@ follow it to its last step, then cook it in a kitchen that holds what it needs â
 missing food on the shop, for delivery to the kitchen, first.
 
 Three templates, each with its difficulty:
-  * cook (easy): one constraint (or none for a unique name), every food in the kitchen;
+  * cook (easy): one constraint (a name no other recipe has: asked by a word of it), every food in the kitchen;
   * buy (medium): one constraint, one needed food missing and ordered for delivery;
   * hard: two constraints that together single out the recipe, two needed foods missing and
     ordered for delivery (in one order).
