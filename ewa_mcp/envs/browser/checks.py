@@ -73,15 +73,15 @@ def extra_order_lines(events: list[dict[str, Any]], goals: list[OrderPlaced]) ->
     for order in orders(events):
         for item in order.get("items") or []:
             wanted = [g for g in goals if _line_of(item, order, g)]
+            quantity = (_as_int(item.get("quantity")) or 0) if isinstance(item, dict) else 0
             line = {"order_id": order.get("order_id"), "store_id": order.get("store_id"),
                     "product_id": item.get("product_id") if isinstance(item, dict) else None,
-                    "size": item.get("size") if isinstance(item, dict) else None,
-                    "quantity": (_as_int(item.get("quantity")) or 0) if isinstance(item, dict) else 0}
+                    "size": item.get("size") if isinstance(item, dict) else None, "quantity": quantity}
             if not wanted:
                 extra.append(line)
                 continue
             goal = wanted[0]
-            ordered[id(goal)] += line["quantity"]
+            ordered[id(goal)] += quantity
             if ordered[id(goal)] > goal.quantity:
                 extra.append(line)
     return extra

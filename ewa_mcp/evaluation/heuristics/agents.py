@@ -389,6 +389,31 @@ class LookAlikeAgent:
         await finish(s)
 
 
+class FirstRecipeAgent:
+    """Choosing by position: open only the first recipe the site lists for the dish's name (or the word the
+    intent asks by) and cook it exactly (the planner's calls), the constraints ignored. It passes where the
+    target is listed first: a guess, which a choice among two recipes leaves right half the time."""
+
+    name = "first-recipe"
+
+    async def play(self, s: Session) -> None:
+        from ...envs.kitchen.taskgen.outcomes import kitchen_calls
+        from ...envs.kitchen.taskgen.recipe_goals import recipe_ops
+
+        seen = visible(s)
+        intent = str(seen.get("intent", ""))
+        recipes = listed_recipes(intent) if seen.get("domain") == "cooking" else []
+        if not recipes:
+            return await finish(s)
+        await open_last_step(s, recipes[0])
+        missing = missing_foods(intent)
+        await order_missing(s, missing)
+        scene = await enter_kitchen(s)
+        if scene is not None:
+            await run_calls(s, kitchen_calls(scene, recipe_ops(recipes[0]), missing))
+        await finish(s)
+
+
 HEURISTICS: dict[str, type] = {a.name: a for a in (PriorAgent, GeoLexicalAgent, WikiSearchAgent,
                                                    OrderEverywhereAgent, FirstListedAgent, CookEverythingAgent,
-                                                   LookAlikeAgent)}
+                                                   LookAlikeAgent, FirstRecipeAgent)}
