@@ -20,7 +20,7 @@ import tempfile
 import time
 
 TIMEOUT_S = 5.0  # the OpenAI Agents SDK's default per-request timeout for MCP servers
-TASKS = ["cooking-buy-0001", "navigation-boston-001", "geo-0001-embodied", "geo-0001-baseline"]
+TASKS = ["cooking-buy-0001", "navigation-boston-001", "geo-0018-embodied", "geo-0018-baseline"]
 
 
 def _send(proc: subprocess.Popen, message: dict) -> None:

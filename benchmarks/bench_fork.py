@@ -36,7 +36,7 @@ async def main(rounds: int) -> dict:
     cook = next(t for t in sorted(episodes.tasks.all("cooking"), key=lambda t: t.id) if t.id.startswith("cooking-cook"))
     worlds = {"street": embodied_only(episodes.tasks.get("navigation-boston-000"), "bench-walk"),
               "kitchen": embodied_only(cook, "bench-kitchen"),
-              "geo": embodied_only(episodes.tasks.get("geo-0100-embodied"), "bench-geo")}
+              "geo": embodied_only(episodes.tasks.get("geo-0079-embodied"), "bench-geo")}
     out: dict = {"rounds": rounds, "target_ms": TARGET_MS, "worlds": {}}
     try:
         for world, task in worlds.items():

@@ -105,7 +105,7 @@ async def bench_episodes(real_web: bool) -> dict[str, Any]:
             final = json.loads((tmp / "run" / episode_id / "final_state.json").read_text(encoding="utf-8"))
             rows.append({**grade_geolocation(task.answer, final["submission"]), "setting": task.metadata["setting"]})
         # Vision mode: four PNGs per move.
-        for task_id in ("geo-0001-embodied", "geo-0076-embodied", "geo-0137-embodied"):
+        for task_id in ("geo-0018-embodied", "geo-0042-embodied", "geo-0021-embodied"):
             r = await client.call_tool("start_episode", {"task_id": task_id, "options": {"observation": "vision"}})
             episode_id = r.structured_content["episode_id"]
             t = time.perf_counter()

@@ -115,7 +115,8 @@ def grade_record(record: EpisodeRecord, radius_m: float | None = None) -> Episod
                                                   note="web_events.jsonl missing"))
             else:
                 conditions.append(_check(goal, "web", CheckContext(state=None, why_no_state=None,
-                                                                    events=record.events, metadata=task.metadata)))
+                                                                    events=record.events, metadata=task.metadata,
+                                                                    web_goals=list(task.web_goals))))
         if events_missing and task.web_goals:
             problems.append("web_events.jsonl missing: web goals cannot be checked")
         orders = _orders_for_pickup(task, record.events)

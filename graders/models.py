@@ -37,6 +37,9 @@ class CheckContext:
     orders: list[dict[str, Any]] = field(default_factory=list)  # the orders a pickup walk may refer to
     radius_m: float | None = None  # overrides every street goal's radius when set
     navigation: list[NavigationResult] = field(default_factory=list)  # street checks add their metrics here
+    # The task's web goals, all of them: a check that judges over-acting (an order no goal asks for) must
+    # know what the other goals of the task ask.
+    web_goals: list[Any] = field(default_factory=list)
 
     def unknown(self, side: Side, goal: Any, why: str | None) -> ConditionResult:
         return ConditionResult(side=side, kind=goal.kind, description=goal.kind, met=None, note=why)

@@ -12,7 +12,7 @@ from ewa_mcp.envs.browser.incremental import tree_changes
 from ewa_mcp.server import ServerConfig, build_server
 
 pytestmark = pytest.mark.anyio
-TASK = "geo-0001-baseline"  # embodied only: no browser needed
+TASK = "geo-0018-baseline"  # embodied only: no browser needed
 
 
 def test_first_sentence_keeps_abbreviations_brackets_and_quotes_whole():

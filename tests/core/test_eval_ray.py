@@ -22,7 +22,7 @@ from .test_eval_workers import StallOnce, drive_until_stalled, grades, grades_in
 
 def ray_tasks():
     store = TaskStore([tasks_dir()])
-    # Quick episodes, one of them (geo-0062-embodied) with a browser.
+    # Quick episodes, one of them (geo-0027-embodied) with a browser.
     return select_tasks(store, None, 4, ["geolocation"]) + select_tasks(store, ["demo-*"], None)
 
 

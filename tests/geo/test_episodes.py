@@ -16,8 +16,8 @@ from ewa_mcp.server import ServerConfig, build_server
 
 pytestmark = pytest.mark.anyio
 
-SAMPLE = ["geo-0001", "geo-0002", "geo-0044", "geo-0076", "geo-0092", "geo-0114", "geo-0147", "geo-0163",
-          "geo-0181"]
+SAMPLE = ["geo-0018", "geo-0003", "geo-0122", "geo-0042", "geo-0102", "geo-0066", "geo-0158", "geo-0026",
+          "geo-0164"]
 
 
 class WikiStandIn(Environment):
@@ -92,7 +92,7 @@ async def test_oracle_scores_100_percent_on_every_level(server, setting):
 async def test_embodied_moves_views_and_neighbours(server):
     mcp, _, run_dir = server
     async with Client(mcp) as client:
-        episode_id, r = await start(client, "geo-0044-embodied")
+        episode_id, r = await start(client, "geo-0122-embodied")
         obs = r.structured_content["observation"]
         assert [v["heading"] for v in obs["views"]] == ["north", "east", "south", "west"]
         assert {n["id"] for n in obs["neighbours"]} == {"p1", "p2"} and obs["can_move"]
@@ -125,7 +125,7 @@ async def test_embodied_moves_views_and_neighbours(server):
 async def test_bad_moves_and_looks_change_nothing(server):
     mcp, _, _ = server
     async with Client(mcp) as client:
-        episode_id, _ = await start(client, "geo-0005-embodied")  # a north-south street: nothing to the left
+        episode_id, _ = await start(client, "geo-0057-embodied")  # a north-south street: nothing to the left
         for args, expected in (({"neighbour": "p3"}, "not adjacent"), ({"neighbour": "zz"}, "unknown neighbour"),
                                ({"direction": "left"}, "no neighbour left"), ({}, "exactly one"),
                                ({"direction": "north", "neighbour": "p1"}, "exactly one")):
@@ -136,7 +136,7 @@ async def test_bad_moves_and_looks_change_nothing(server):
         assert r.structured_content["observation"]["facing"] == "north"
         assert (await status(client, episode_id))["status"] == "running"
 
-        base_id, r = await start(client, "geo-0044-baseline")
+        base_id, r = await start(client, "geo-0122-baseline")
         assert [v["heading"] for v in r.structured_content["observation"]["views"]] == ["north"]
         assert r.structured_content["observation"]["neighbours"] == []
         r = await client.call_tool("geo_move", {"episode_id": base_id, "neighbour": "p1"})
@@ -148,14 +148,14 @@ async def test_bad_moves_and_looks_change_nothing(server):
 async def test_setting_option_overrides_the_task_and_vision_mode_sends_images(server):
     mcp, _, run_dir = server
     async with Client(mcp) as client:
-        episode_id, r = await start(client, "geo-0002-embodied", {"geolocation_setting": "baseline",
+        episode_id, r = await start(client, "geo-0003-embodied", {"geolocation_setting": "baseline",
                                                                  "observation": "vision"})
         obs = r.structured_content["observation"]
         assert obs["setting"] == "baseline" and len(obs["views"]) == 1 and "description" not in obs["views"][0]
         images = [c for c in r.content if c.type == "image"]
         assert len(images) == 1 and images[0].mime_type == "image/png"
 
-        episode_id, r = await start(client, "geo-0002-baseline", {"geolocation_setting": "embodied",
+        episode_id, r = await start(client, "geo-0003-baseline", {"geolocation_setting": "embodied",
                                                                  "observation": "both"})
         obs = r.structured_content["observation"]
         assert obs["setting"] == "embodied" and obs["can_move"] and len(obs["views"]) == 4
@@ -184,7 +184,7 @@ async def test_setting_option_overrides_the_task_and_vision_mode_sends_images(se
 async def test_invalid_submissions_are_refused_and_the_episode_stays_open(server, args, expected):
     mcp, _, run_dir = server
     async with Client(mcp) as client:
-        episode_id, _ = await start(client, "geo-0001-baseline")
+        episode_id, _ = await start(client, "geo-0018-baseline")
         r = await client.call_tool("submit_location", {"episode_id": episode_id, **args})
         assert r.is_error and expected in text_of(r), text_of(r)
         state = await status(client, episode_id)
@@ -218,7 +218,7 @@ async def test_completion_is_the_fraction_of_levels_right(server):
     from ewa_mcp.graders.episode import grade_episode
 
     mcp, episodes, run_dir = server
-    task = episodes.tasks.get("geo-0001-baseline")
+    task = episodes.tasks.get("geo-0018-baseline")
     async with Client(mcp) as client:
         half, _ = await start(client, task.id)
         r = await client.call_tool("submit_location", {

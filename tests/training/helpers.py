@@ -10,5 +10,5 @@ ONE_PER_DOMAIN = {
     "cooking": "cooking-buy-0001",
     "shopping": "shopping-calories-000",
     "traveling": "traveling-boston-005",
-    "geolocation": "geo-0001-baseline",
+    "geolocation": "geo-0018-baseline",
 }

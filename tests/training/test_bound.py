@@ -16,7 +16,7 @@ from ewa_mcp.graders import grade_episode
 from ewa_mcp.server import ServerConfig, build_server
 
 pytestmark = pytest.mark.anyio
-TASK = "geo-0001-baseline"  # embodied only: no browser needed
+TASK = "geo-0018-baseline"  # embodied only: no browser needed
 
 
 async def test_bound_tools_have_no_episode_id_and_no_control_tools(tmp_path):

@@ -15,7 +15,7 @@ from ewa_mcp.settings import load_settings
 from ewa_mcp.core.taskmodel import TaskStore
 
 pytestmark = pytest.mark.browser
-TASKS = ["geo-0001-baseline", "navigation-boston-000"]
+TASKS = ["geo-0018-baseline", "navigation-boston-000"]
 
 
 @pytest.fixture(scope="module")
@@ -65,7 +65,7 @@ def test_all_keeps_failed_episodes_and_a_record_that_does_not_replay_is_left_out
     assert proc.returncode == 0 and len(lines) == 3
     assert sorted(line["metadata"]["success"] for line in lines) == [False, True, True]
     # Tamper with a record: a move the agent never made cannot be replayed into what it saw.
-    geo = next(p for p in run.iterdir() if p.is_dir() and "geo-0001-baseline" in (p / "task.json").read_text())
+    geo = next(p for p in run.iterdir() if p.is_dir() and "geo-0018-baseline" in (p / "task.json").read_text())
     trajectory = geo / "trajectory.jsonl"
     saved = trajectory.read_text()
     try:

@@ -22,7 +22,7 @@ async def server(tmp_path):
     full, episodes = build_server(ServerConfig(run_dir=tmp_path))
     cook = next(t for t in sorted(episodes.tasks.all("cooking"), key=lambda t: t.id) if t.id.startswith("cooking-cook"))
     for task, new_id in ((episodes.tasks.get("navigation-boston-000"), "walk-boston-000"), (cook, "kitchen-cook"),
-                         (episodes.tasks.get("geo-0100-embodied"), "geo-walk-0100")):
+                         (episodes.tasks.get("geo-0079-embodied"), "geo-walk-0100")):
         episodes.tasks.add(embodied_only(task, new_id))
     yield full, episodes
     await episodes.aclose()
@@ -78,7 +78,7 @@ async def test_a_fork_is_independent_of_its_original(server):
 
 async def test_web_episodes_are_refused_and_nothing_is_created(server):
     full, episodes = server
-    start = await full.call_tool("start_episode", {"task_id": "geo-0001-baseline"})
+    start = await full.call_tool("start_episode", {"task_id": "geo-0018-baseline"})
     geo = start.structured_content["episode_id"]
     await fork_episode(episodes, geo)  # no browser: forkable
     start = await full.call_tool("start_episode", {"task_id": "navigation-boston-000"})
@@ -100,7 +100,7 @@ def test_gym_fork_gives_the_same_observations_and_rewards(tmp_path):
     env = gymnasium.make("ewa_mcp/geolocation-v0", run_dir=tmp_path, reward="dense")
     try:
         store = env.unwrapped._runtime.episodes.tasks
-        store.add(embodied_only(store.get("geo-0100-embodied"), "geo-walk-0100"))  # no wiki browser: forkable
+        store.add(embodied_only(store.get("geo-0079-embodied"), "geo-walk-0100"))  # no wiki browser: forkable
         env.reset(options={"task_id": "geo-walk-0100"})
         env.step({"tool": "geo_move", "arguments": {"direction": "north"}})
         other = env.unwrapped.fork()
@@ -112,6 +112,6 @@ def test_gym_fork_gives_the_same_observations_and_rewards(tmp_path):
         assert a == b
         assert a[-1][2] is True  # terminated, in both
         other.close()
-        env.reset(options={"task_id": "geo-0001-baseline"})  # the shared server outlives the fork
+        env.reset(options={"task_id": "geo-0018-baseline"})  # the shared server outlives the fork
     finally:
         env.close()

@@ -89,7 +89,7 @@ def test_reset_aborts_the_running_episode_and_bad_input_is_refused(tmp_path):
         u = env.unwrapped
         with pytest.raises(gymnasium.error.ResetNeeded):
             env.step({"tool": "geo_look", "arguments": {}})
-        env.reset(options={"task_id": "geo-0001-baseline"})
+        env.reset(options={"task_id": "geo-0018-baseline"})
         first = u.episode_id
         with pytest.raises(ValueError, match="unknown task id"):
             env.reset(options={"task_id": "no-such-task"})
@@ -97,10 +97,10 @@ def test_reset_aborts_the_running_episode_and_bad_input_is_refused(tmp_path):
         with pytest.raises(ValueError, match="an action is"):
             env.step("geo_look")
         with pytest.raises(ValueError, match="unknown reset option"):
-            env.reset(options={"task": "geo-0001-baseline"})
+            env.reset(options={"task": "geo-0018-baseline"})
         obs, reward, terminated, truncated, info = env.step({"tool": "no_such_tool", "arguments": {}})
         assert info["ok"] is False and info["steps"] == 1 and "no_such_tool" in obs  # refused, a step as over MCP
-        env.reset(options={"task_id": "geo-0001-baseline"})
+        env.reset(options={"task_id": "geo-0018-baseline"})
         assert grade_episode(u.run_dir / first).status == "aborted"
     finally:
         env.close()

@@ -53,6 +53,40 @@ def matching_orders(events: list[dict[str, Any]], goal: OrderPlaced) -> list[dic
     return [o for o in orders(events) if order_matches(o, goal)]
 
 
+def _line_of(item: Any, order: dict[str, Any], goal: OrderPlaced) -> bool:
+    """This order line is of the goal's product (and size, and store, where the goal names them)."""
+    if not isinstance(item, dict) or item.get("product_id") != goal.product_id:
+        return False
+    if goal.store_id is not None and order.get("store_id") != goal.store_id:
+        return False
+    return goal.size is None or _same_text(item.get("size"), goal.size)
+
+
+def extra_order_lines(events: list[dict[str, Any]], goals: list[OrderPlaced]) -> list[dict[str, Any]]:
+    """What the episode ordered beyond what the task's order goals ask for: one choice means one choice
+    (issue 26). A line no goal asks for (a rival product, another size, another store), and, per goal,
+    what its lines hold beyond its quantity summed over every order (the same item ordered again, or at
+    every store when the goal names none). Ordering every candidate, or at every store, would otherwise
+    meet the goal without choosing."""
+    extra: list[dict[str, Any]] = []
+    ordered = {id(g): 0 for g in goals}
+    for order in orders(events):
+        for item in order.get("items") or []:
+            wanted = [g for g in goals if _line_of(item, order, g)]
+            quantity = (_as_int(item.get("quantity")) or 0) if isinstance(item, dict) else 0
+            line = {"order_id": order.get("order_id"), "store_id": order.get("store_id"),
+                    "product_id": item.get("product_id") if isinstance(item, dict) else None,
+                    "size": item.get("size") if isinstance(item, dict) else None, "quantity": quantity}
+            if not wanted:
+                extra.append(line)
+                continue
+            goal = wanted[0]
+            ordered[id(goal)] += quantity
+            if ordered[id(goal)] > goal.quantity:
+                extra.append(line)
+    return extra
+
+
 def check_recipe(goal: RecipeCompleted, events: list[dict[str, Any]]) -> ConditionResult:
     """The goal's recipe was shown to its last step, and no other recipe was: one choice means one choice
     (issue 26). Opening the last step of every same-named recipe would otherwise pass without choosing;
@@ -83,16 +117,29 @@ def check_recipe(goal: RecipeCompleted, events: list[dict[str, Any]]) -> Conditi
                            met=completed and not completed_other, detail=detail, note=note)
 
 
-def check_order(goal: OrderPlaced, events: list[dict[str, Any]]) -> ConditionResult:
+def check_order(goal: OrderPlaced, events: list[dict[str, Any]],
+                task_goals: list[Any] | None = None) -> ConditionResult:
+    """Some order holds the goal's item exactly, and the episode ordered nothing the task's order goals
+    (``task_goals``: all its web goals; this goal alone when not given) do not ask for."""
     found = matching_orders(events, goal)
     placed = orders(events)
     detail: dict[str, Any] = {"orders_placed": len(placed)}
-    if found:
-        detail["order_id"] = found[0].get("order_id")
-        detail["store_id"] = found[0].get("store_id")
-        return ConditionResult(side="web", kind=goal.kind, description=_describe(goal), met=True, detail=detail)
-    note = "no order was placed" if not placed else "no order has this product, size, quantity and store"
-    return ConditionResult(side="web", kind=goal.kind, description=_describe(goal), met=False, detail=detail, note=note)
+    if not found:
+        note = "no order was placed" if not placed else "no order has this product, size, quantity and store"
+        return ConditionResult(side="web", kind=goal.kind, description=_describe(goal), met=False, detail=detail,
+                               note=note)
+    detail["order_id"] = found[0].get("order_id")
+    detail["store_id"] = found[0].get("store_id")
+    order_goals = [g for g in (task_goals or []) if isinstance(g, OrderPlaced)] or [goal]
+    if goal not in order_goals:
+        order_goals.append(goal)
+    extra = extra_order_lines(events, order_goals)
+    if extra:
+        detail["extra_order_lines"] = extra
+        return ConditionResult(side="web", kind=goal.kind, description=_describe(goal), met=False, detail=detail,
+                               note=f"{len(extra)} order line(s) beyond what the task asks for (another product, "
+                                    "size or store, or the same item again): order only what was asked")
+    return ConditionResult(side="web", kind=goal.kind, description=_describe(goal), met=True, detail=detail)
 
 
 def check_directions(goal: DirectionsShown, events: list[dict[str, Any]]) -> ConditionResult:
@@ -113,11 +160,11 @@ def check_page(goal: PageVisited, events: list[dict[str, Any]]) -> ConditionResu
     return ConditionResult(side="web", kind=goal.kind, description=_describe(goal), met=met)
 
 
-def check_web_goal(goal: Any, events: list[dict[str, Any]]) -> ConditionResult:
+def check_web_goal(goal: Any, events: list[dict[str, Any]], task_goals: list[Any] | None = None) -> ConditionResult:
     if isinstance(goal, RecipeCompleted):
         return check_recipe(goal, events)
     if isinstance(goal, OrderPlaced):
-        return check_order(goal, events)
+        return check_order(goal, events, task_goals)
     if isinstance(goal, DirectionsShown):
         return check_directions(goal, events)
     if isinstance(goal, PageVisited):
@@ -144,4 +191,4 @@ def _describe(goal: Any) -> str:
 
 def web_goal(goal: Any, ctx: CheckContext) -> ConditionResult:
     """The registry's entry point for every web goal kind (docs/grading.md, "Web goals")."""
-    return check_web_goal(goal, ctx.events)
+    return check_web_goal(goal, ctx.events, ctx.web_goals)

@@ -11,7 +11,8 @@ from __future__ import annotations
 from typing import Any
 
 # The agents by name, known without importing them (the command line lists them at start-up).
-NAMES = ("prior", "geo-lexical", "wiki-search", "order-everywhere", "first-listed", "cook-everything", "look-alike")
+NAMES = ("prior", "geo-lexical", "wiki-search", "order-everywhere", "first-listed", "cook-everything", "look-alike",
+         "first-recipe")
 
 
 def heuristic_agent(name: str) -> Any:

@@ -289,6 +289,20 @@ def same_named(name: str) -> list[dict[str, Any]]:
     return [r for r in load_catalog().search(Filters(q=name)) if r["name"] == name]
 
 
+def listed_recipes(intent: str) -> list[dict[str, Any]]:
+    """The recipes the intent's name matches, as the site lists them: every recipe of the dish's name, or,
+    where the intent asks by a word of the name ('the dish whose name has the word "Salad"'), every recipe
+    whose name has the word. The constraints that tell them apart are not read."""
+    from ...envs.kitchen.taskgen.cooking import named_with
+    from ...websites.recipes.catalog import load_catalog
+
+    name = dish_of(intent)
+    if name is not None:
+        return same_named(name)
+    m = re.match(r'Cook the dish whose name has the word "([^"]+)"', intent)
+    return named_with(m.group(1).lower(), load_catalog()) if m else []
+
+
 async def open_last_step(s: Session, recipe: dict[str, Any]) -> None:
     await s.call("browser_goto", {"url": f"recipes:/?q={recipe['name']}"})
     await s.call("browser_goto", {"url": f"recipes:/recipe/{recipe['id']}?step={len(recipe['steps'])}"})
@@ -333,10 +347,10 @@ class CookEverythingAgent:
 
         seen = visible(s)
         intent = str(seen.get("intent", ""))
-        name = dish_of(intent) if seen.get("domain") == "cooking" else None
-        if name is None:
+        recipes = listed_recipes(intent) if seen.get("domain") == "cooking" else []
+        if not recipes:
             return await finish(s)
-        for recipe in same_named(name):
+        for recipe in recipes:
             await open_last_step(s, recipe)
         missing = missing_foods(intent)
         await order_missing(s, missing)
@@ -361,8 +375,7 @@ class LookAlikeAgent:
 
         seen = visible(s)
         intent = str(seen.get("intent", ""))
-        name = dish_of(intent) if seen.get("domain") == "cooking" else None
-        recipes = same_named(name) if name else []
+        recipes = listed_recipes(intent) if seen.get("domain") == "cooking" else []
         if not recipes:
             return await finish(s)
         recipe = recipes[0]
@@ -376,6 +389,31 @@ class LookAlikeAgent:
         await finish(s)
 
 
+class FirstRecipeAgent:
+    """Choosing by position: open only the first recipe the site lists for the dish's name (or the word the
+    intent asks by) and cook it exactly (the planner's calls), the constraints ignored. It passes where the
+    target is listed first: a guess, which a choice among two recipes leaves right half the time."""
+
+    name = "first-recipe"
+
+    async def play(self, s: Session) -> None:
+        from ...envs.kitchen.taskgen.outcomes import kitchen_calls
+        from ...envs.kitchen.taskgen.recipe_goals import recipe_ops
+
+        seen = visible(s)
+        intent = str(seen.get("intent", ""))
+        recipes = listed_recipes(intent) if seen.get("domain") == "cooking" else []
+        if not recipes:
+            return await finish(s)
+        await open_last_step(s, recipes[0])
+        missing = missing_foods(intent)
+        await order_missing(s, missing)
+        scene = await enter_kitchen(s)
+        if scene is not None:
+            await run_calls(s, kitchen_calls(scene, recipe_ops(recipes[0]), missing))
+        await finish(s)
+
+
 HEURISTICS: dict[str, type] = {a.name: a for a in (PriorAgent, GeoLexicalAgent, WikiSearchAgent,
                                                    OrderEverywhereAgent, FirstListedAgent, CookEverythingAgent,
-                                                   LookAlikeAgent)}
+                                                   LookAlikeAgent, FirstRecipeAgent)}

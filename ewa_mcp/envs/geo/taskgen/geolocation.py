@@ -8,6 +8,7 @@ byte (a test checks that the committed files are current).
 
 from __future__ import annotations
 
+import hashlib
 import json
 from pathlib import Path
 from typing import Any
@@ -36,8 +37,22 @@ INTENTS = {
 }
 
 
+def _task_numbers() -> dict[str, int]:
+    """Each location's task number: its rank in a seeded shuffle, never its place in the location list.
+    The list runs continent by continent, so numbering by it made the id (which the agent sees, and the
+    order of list_tasks) tell the continent (issue 26, principle 3). Ranking by a hash of the location id
+    is a shuffle that reproduces byte for byte."""
+    def key(loc: Location) -> bytes:
+        return hashlib.sha256(f"geo-task-number|{loc.id}".encode()).digest()
+
+    return {loc.id: rank for rank, loc in enumerate(sorted(LOCATIONS_LIST, key=key), start=1)}
+
+
+TASK_NUMBERS = _task_numbers()
+
+
 def task_id(loc: Location, setting: str) -> str:
-    return f"geo-{int(loc.id[1:]):04d}-{setting}"
+    return f"geo-{TASK_NUMBERS[loc.id]:04d}-{setting}"
 
 
 def answer_for(loc: Location) -> GeoAnswer:
@@ -92,7 +107,8 @@ def build_task(loc: Location, setting: str) -> Task:
 
 
 def build_tasks(setting: str) -> list[Task]:
-    return [build_task(loc, setting) for loc in LOCATIONS_LIST]
+    """The setting's tasks in id order (the shuffled numbering), so the file's order tells nothing either."""
+    return sorted((build_task(loc, setting) for loc in LOCATIONS_LIST), key=lambda t: t.id)
 
 
 def generate_tasks(out_dir: Path) -> int:

@@ -3,7 +3,7 @@ follow it to its last step, then cook it in a kitchen that holds what it needs â
 missing food on the shop, for delivery to the kitchen, first.
 
 Three templates, each with its difficulty:
-  * cook (easy): one constraint (or none for a unique name), every food in the kitchen;
+  * cook (easy): one constraint (a name no other recipe has: asked by a word of it), every food in the kitchen;
   * buy (medium): one constraint, one needed food missing and ordered for delivery;
   * hard: two constraints that together single out the recipe, two needed foods missing and
     ordered for delivery (in one order).
@@ -11,12 +11,15 @@ Three templates, each with its difficulty:
 
 from __future__ import annotations
 
+import functools
 import re
 from typing import Any
 
 from ..planner import check_recipe_executable, plan_ops, scene_inventory
 from ewa_mcp.core.taskmodel import KitchenStart, OrderPlaced, RecipeCompleted, StartState, Task, WebStart
 from ewa_mcp.websites.recipes.catalog import Filters, load_catalog
+from ewa_mcp.websites.recipes.catalog import _token_in as token_in
+from ewa_mcp.websites.recipes.catalog import _tokens as tokens
 from ewa_mcp.websites.shop import catalog as shop_catalog
 from ewa_mcp.websites.recipes.vocabulary import EQUIPMENT_WORDS, KITCHEN_PRODUCTS, required_equipment
 from ewa_mcp.taskgen.common import call, ref, rng_for, site_url, step_budget
@@ -35,17 +38,22 @@ KITCHEN_SCOPE = ("Only the kitchen steps count: steps and ingredients the recipe
 DIET_LABEL = {"vegetarian": "Vegetarian", "vegan": "Vegan", "non-vegetarian": "Non-vegetarian"}
 
 
-def constraint_options(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dict[str, Any]]]:
-    """Every (intent suffix, search filter) that is true of this recipe and tells it from some look-alike."""
-    same_name = [r for r in catalog.recipes if r["name"] == recipe["name"]]
-    others = [r for r in same_name if r["id"] != recipe["id"]]
+def constraint_options(recipe: dict[str, Any], catalog: Any, others: list[dict[str, Any]] | None = None,
+                       wide: bool = False) -> list[tuple[str, dict[str, Any]]]:
+    """Every (intent suffix, search filter) that is true of this recipe and tells it from some look-alike
+    (``others``: those of its name when not given)."""
+    if others is None:
+        others = [r for r in catalog.recipes if r["name"] == recipe["name"] and r["id"] != recipe["id"]]
     names = {i["name"] for i in recipe["ingredients"]}
     other_names = set().union(*({i["name"] for i in o["ingredients"]} for o in others)) if others else set()
     options: list[tuple[str, dict[str, Any]]] = []
     options.append((f"Diet type: {DIET_LABEL[recipe['diet']]}", {"diet": recipe["diet"]}))
     options.append((f"Difficulty level: {recipe['difficulty'].capitalize()}", {"difficulty": recipe["difficulty"]}))
     options += [(f"Use equipment: {e}", {"equipment": [e]}) for e in recipe["equipment"]]
-    options += [(f"Include ingredient: {n}", {"include": [n]}) for n in sorted(names - other_names)]
+    # Among same-named recipes an ingredient tells only when the others lack it; among many recipes that
+    # share a word of their names, any ingredient of this one narrows the list.
+    include = names if wide else names - other_names
+    options += [(f"Include ingredient: {n}", {"include": [n]}) for n in sorted(include)]
     options += [(f"Exclude ingredient: {n}", {"exclude": [n]}) for n in sorted(other_names - names)]
     return options
 
@@ -58,9 +66,83 @@ def singles_out(recipe: dict[str, Any], catalog: Any, filters: dict[str, Any]) -
     return [r["id"] for r in catalog.search(f) if r["name"] == recipe["name"]] == [recipe["id"]]
 
 
+# Words of a dish's name that name no kind of dish ("Salmon with Crispy Potatoes": salmon, crispy, potatoes).
+NAME_WORD_SKIP = {"and", "with", "in", "a", "the", "of", "over", "for", "on", "to", "de", "style"}
+NAME_WORD_MIN_NAMES = 3  # recipes of at least this many names share the word: a real choice
+
+
+def _filters(q: str, filters: dict[str, Any]) -> Filters:
+    return Filters(q=q, diet=filters.get("diet", ""), difficulty=filters.get("difficulty", ""),
+                   include=tuple(filters.get("include", ())), exclude=tuple(filters.get("exclude", ())),
+                   equipment=tuple(filters.get("equipment", ())))
+
+
+def named_with(word: str, catalog: Any, filters: dict[str, Any] | None = None) -> list[dict[str, Any]]:
+    """The recipes a search for ``word`` (with the filters) lists whose name has the word, in listed order."""
+    return [r for r in catalog.search(_filters(word, filters or {})) if token_in(word, r["name"].lower())]
+
+
+def name_word_constraints(recipe: dict[str, Any], catalog: Any) -> tuple[str, list[tuple[str, dict[str, Any]]]]:
+    if catalog is load_catalog():
+        return _name_word_constraints(recipe["id"])
+    return _find_name_word_constraints(recipe, catalog)
+
+
+@functools.cache
+def _name_word_constraints(recipe_id: str) -> tuple[str, list[tuple[str, dict[str, Any]]]]:
+    catalog = load_catalog()
+    return _find_name_word_constraints(catalog.by_id[recipe_id], catalog)
+
+
+def _find_name_word_constraints(recipe: dict[str, Any],
+                                catalog: Any) -> tuple[str, list[tuple[str, dict[str, Any]]]]:
+    """For a recipe whose name no other recipe has: a word of its name that the names of several recipes
+    share, and the constraints (one, else two together) that leave it alone among them; ("", []) when no
+    word does. Named outright, such a recipe needs no choosing: following the only recipe of that name,
+    step by step, was the task (issue 26, the look-alike agent scored there). Asked for by the word, the
+    agent must tell it from the other recipes of that word by the constraint."""
+    best: tuple[int, str, list[tuple[str, dict[str, Any]]]] = (0, "", [])
+    for word in reversed(tokens(recipe["name"])):
+        if word in NAME_WORD_SKIP or len(word) < 3:
+            continue
+        listed = named_with(word, catalog)
+        if len({r["name"] for r in listed}) < NAME_WORD_MIN_NAMES:
+            continue
+        others = [r for r in listed if r["id"] != recipe["id"]]
+        options = constraint_options(recipe, catalog, others, wide=True)
+        alone = [(suffix, f) for suffix, f in options if [r["id"] for r in named_with(word, catalog, f)] == [recipe["id"]]]
+        if not alone:
+            for i, (s1, f1) in enumerate(options):
+                for s2, f2 in options[i + 1:]:
+                    merged = merge_filters(f1, f2)
+                    if merged is not None and [r["id"] for r in named_with(word, catalog, merged)] == [recipe["id"]]:
+                        alone.append((f"{s1}. {s2}", merged))
+        # The word most recipes share first (more to choose from), then one constraint over two.
+        rank = len(listed) * (2 if alone and ". " not in alone[0][0] else 1)
+        if alone and rank > best[0]:
+            best = (rank, word, [(suffix, {**f, "q": word}) for suffix, f in alone])
+    return best[1], best[2]
+
+
+def look_alikes(recipe: dict[str, Any], catalog: Any) -> list[dict[str, Any]]:
+    """The recipes a task for this one must be told from: those of its name, or, for a name no other recipe
+    has, those that share the word the intent asks by."""
+    same = [r for r in catalog.recipes if r["name"] == recipe["name"] and r["id"] != recipe["id"]]
+    if same:
+        return same
+    word, _ = name_word_constraints(recipe, catalog)
+    return [r for r in named_with(word, catalog) if r["id"] != recipe["id"]] if word else []
+
+
 def constraints_for(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dict[str, Any]]]:
-    """(intent suffix, search filters) pairs that leave exactly this recipe among those with its name."""
+    """(intent suffix, search filters) pairs that leave exactly this recipe among those with its name; for
+    a name no other recipe has, among those whose name has a word of its name (the filters carry the word
+    as ``q``), or, where no word does, the name alone (nothing to choose; listed in docs/verified.md)."""
     unique = sum(r["name"] == recipe["name"] for r in catalog.recipes) == 1
+    if unique:
+        _, by_word = name_word_constraints(recipe, catalog)
+        if by_word:
+            return by_word
     good: list[tuple[str, dict[str, Any]]] = [("", {})] if unique else []
     good += [(suffix, f) for suffix, f in constraint_options(recipe, catalog) if singles_out(recipe, catalog, f)]
     return good
@@ -102,7 +184,8 @@ def recipe_web_oracle(recipe: dict[str, Any], filters: dict[str, Any]) -> list[A
     The step viewer's URL encodes the step, so the oracle jumps to the last one instead of clicking
     Next n-1 times: same goal, a third of the browser time for a whole-suite run."""
     steps = len(recipe["steps"])
-    calls = [call("browser_goto", url=site_url("recipes", "/", q=recipe["name"], **filters)),
+    search = {"q": recipe["name"], **filters}  # a task asking by a word of the name searches that word
+    calls = [call("browser_goto", url=site_url("recipes", "/", **search)),
              call("browser_click", element=ref("link", recipe["name"]))]
     if steps > 1:
         calls.append(call("browser_goto", url=site_url("recipes", f"/recipe/{recipe['id']}", step=steps)))
@@ -168,7 +251,7 @@ def kitchen_goals(recipe: dict[str, Any], scene: str, buy: list[str]) -> list[An
     """The recipe's kitchen goals in this kitchen: its outcome, and what tells it from its look-alikes and
     from doing everything (a food only a look-alike uses, when this kitchen has it, stays whole and raw)."""
     ops = recipe_ops(recipe)
-    rivals = [recipe_ops(r) for r in load_catalog().recipes if r["name"] == recipe["name"] and r["id"] != recipe["id"]]
+    rivals = [recipe_ops(r) for r in look_alikes(recipe, load_catalog())]
     present = scene_inventory(scene)["food"] | set(buy)
     return goals_from_ops(ops, [f for f in rival_foods(ops, rivals) if f in present])
 
@@ -189,7 +272,12 @@ def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str
     kitchen = [call(c["tool"], **c["args"]) for c in plan_ops(scene, ops, delivered_types=buy)]
     web = recipe_web_oracle(recipe, filters)
     web_goals: list[Any] = [RecipeCompleted(recipe_id=recipe["id"])]
-    intent = f"Cook {recipe['name']}." + (f" {suffix}." if suffix else "")
+    word = filters.get("q")
+    if word:
+        intent = (f'Cook the dish whose name has the word "{word.capitalize()}" and that fits this: {suffix}. '
+                  f'Several recipes have "{word.capitalize()}" in their name; only one fits.')
+    else:
+        intent = f"Cook {recipe['name']}." + (f" {suffix}." if suffix else "")
     if buy:
         web += buy_oracle(products)
         web_goals += [OrderPlaced(product_id=product) for product in products]
@@ -217,7 +305,7 @@ def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str
         step_limit=step_budget("cooking", DIFFICULTY[kind], len(oracle) + len(recipe["steps"])),
         oracle=oracle,
         metadata={"recipe_id": recipe["id"], "recipe_name": recipe["name"], "scene": scene,
-                  "constraint": suffix or None, "pair_id": recipe.get("pair_id"),
+                  "constraint": suffix or None, "pair_id": recipe.get("pair_id"), "name_word": word or None,
                   "buy": (buy[0] if len(buy) == 1 else buy) if buy else None,
                   "kitchen_steps": steps["kitchen"], "not_kitchen_steps": steps["not_kitchen"]},
     )
