@@ -8,6 +8,7 @@ from pathlib import Path
 import pytest
 
 from ewa_mcp.envs.street.world import get_world
+from ewa_mcp.graders.textnorm import contains_phrase
 from ewa_mcp.websites.wiki import store as wiki
 
 TASKS_DIR = Path(__file__).resolve().parents[2] / "tasks"
@@ -34,12 +35,34 @@ def test_hard_shopping_orders_two_products_at_one_store_within_a_budget() -> Non
         assert f"${task['metadata']['budget']:.2f}" in task["intent"], task["id"]
 
 
-def test_hard_traveling_describes_the_landmark_only_by_its_look() -> None:
+def walk_m(world, start: str, node: str) -> float:
+    try:
+        return world.directions(start, node).distance_m
+    except ValueError:
+        return float("inf")
+
+
+def test_hard_traveling_needs_the_wiki_fact_and_the_range_together() -> None:
+    """Hard by composition (issue 26, principle 6): no address or name; the landmark is the only one within
+    the stated walk of the corner that has the stated wiki fact, while another landmark of its city has the
+    fact (farther away) and another landmark stands within the range: neither cue alone singles it out."""
+    from ewa_mcp.envs.street.taskgen.traveling import _fact_text, landmarks_of
+
     world = get_world()
-    for task in (t for t in suite("traveling") if t["difficulty"] == "hard"):
+    hard = [t for t in suite("traveling") if t["difficulty"] == "hard"]
+    assert len(hard) >= 25
+    for task in hard:
         place = world.places[task["metadata"]["poi_id"]]
         article = wiki.by_poi_id(place.id)
-        intent = task["intent"].casefold()
-        for giveaway in (place.address, place.name, article.title, *article.aliases):
-            assert giveaway.casefold() not in intent, (task["id"], giveaway)
-        assert place.description_hint in task["intent"]
+        for giveaway in (place.address, place.name, article.title, *article.aliases, place.description_hint):
+            assert not contains_phrase(task["intent"], giveaway), (task["id"], giveaway)  # as words: "UN" ≠ "counts"
+        cue, start = task["metadata"]["cue"], task["start"]["embodied"]["node"]
+        assert cue["value"] in task["intent"] and f"within about {cue['range_m']} m" in task["intent"], task["id"]
+        assert cue["key"] != task["metadata"]["question"], task["id"]
+        peers = [p for p in landmarks_of(world) if p.city == place.city and p.id != place.id
+                 and wiki.by_poi_id(p.id) is not None]
+        sharing = [p for p in peers if cue["key"] in p.facts and _fact_text(cue["key"], p.facts[cue["key"]]) == cue["value"]]
+        assert sharing, task["id"]  # the fact alone does not single it out
+        assert all(walk_m(world, start, p.node) > cue["range_m"] + 100 for p in sharing), task["id"]
+        assert any(walk_m(world, start, p.node) < cue["range_m"] for p in peers), task["id"]  # nor the range
+        assert walk_m(world, start, place.node) <= cue["range_m"] - 50, task["id"]
