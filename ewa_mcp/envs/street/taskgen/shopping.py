@@ -448,9 +448,11 @@ def pair_tasks(ctx: Context) -> list[Task]:
         """The other form: two stores named, the one that can sell both within the budget is the answer, the
         other is nearer (so "the nearer one" fails) and sells both, over the budget. Any store can be the
         answer this way, which spreads the pickup stores where prices favour some stores (issue 26)."""
-        answer = rng.choice(stocked) if stocked else None
+        if not stocked:
+            return None
+        answer: str = rng.choice(stocked)
         rivals = [sid for sid in ctx.stores if sid != answer and totals[sid] is not None
-                  and ctx.walk(start, answer).distance_m - ctx.walk(start, sid).distance_m >= 100] if answer else []
+                  and ctx.walk(start, answer).distance_m - ctx.walk(start, sid).distance_m >= 100]
         if not rivals:
             return None
         rival = rng.choice(rivals)
