@@ -173,7 +173,8 @@ def start_place(world: Any, target: Any, rng: Any, max_m: float = MAX_M) -> tupl
 
 # Hard tasks name the landmark by a wiki fact it shares with other landmarks of its city, and a walking range
 # from the corner that holds other landmarks: only the two together single it out (issue 26, principle 6).
-CUES = {"architectural_style": "in the {v} style", "year_built": "built in {v}", "architect": "designed by {v}"}
+CUES = {"architectural_style": "is in the {v} style", "year_built": "was built in {v}",
+        "architect": "was designed by {v}"}
 CUE_LABEL = {"architectural_style": "its architectural style", "year_built": "the year it was built",
              "architect": "its architect"}
 RANGE_MARGIN_M = 150.0
@@ -244,7 +245,7 @@ def landmark_task(world: Any, tid: str, target: Any, article: Any, question_key:
         key, value, limit = cue
         city = world.city(target.city).name.split(" (")[0]
         intent = (f"You are at the corner of {corner} in {city}. Of the landmarks within about {limit} m of this "
-                  f"corner on foot, exactly one is {CUES[key].format(v=value)}, as its wiki article gives "
+                  f"corner on foot, exactly one {CUES[key].format(v=value)}, as its wiki article gives "
                   f"{CUE_LABEL[key]} (other landmarks of the city share that, farther away). Find it: the wiki's "
                   "articles give each landmark's address, and the map measures walks. "
                   f"{WALK_RULE} When you are there, look it up on the wiki and answer: {question} "
