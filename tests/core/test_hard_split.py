@@ -66,3 +66,27 @@ def test_hard_traveling_needs_the_wiki_fact_and_the_range_together() -> None:
         assert all(walk_m(world, start, p.node) > cue["range_m"] + 100 for p in sharing), task["id"]
         assert any(walk_m(world, start, p.node) < cue["range_m"] for p in peers), task["id"]  # nor the range
         assert walk_m(world, start, place.node) <= cue["range_m"] - 50, task["id"]
+
+
+def test_hard_navigation_order_comes_from_the_wiki_not_the_intent() -> None:
+    """Three stops, oldest building first by the wiki's year built, ending at the newest: the intent's own
+    order and the nearest-stop-first walk end elsewhere; the goals pass the first two and end at the newest."""
+    from ewa_mcp.envs.street.taskgen.navigation import nearest_first
+
+    world = get_world()
+    hard = [t for t in suite("navigation") if t["difficulty"] == "hard"]
+    assert len(hard) >= 30
+    for task in hard:
+        meta = task["metadata"]
+        stops = [world.places[p] for p in meta["stops"]]
+        years = [int(wiki.by_poi_id(p.id).infobox["Year built"]) for p in stops]
+        assert years == meta["years"] and all(b - a >= 5 for a, b in zip(years, years[1:])), task["id"]
+        assert meta["listed"][-1] != meta["stops"][-1], task["id"]
+        positions = [task["intent"].index(p.name) for p in stops]
+        assert sorted(positions) != positions or meta["listed"] != meta["stops"], task["id"]
+        origin = world.places.get(meta["origin_id"]) or world.place(meta["origin_id"])
+        assert nearest_first(world, origin, stops) != meta["stops"][-1], task["id"]
+        goals = task["embodied_goals"]
+        assert [g["kind"] for g in goals] == ["passed_place", "passed_place", "reached_place"], task["id"]
+        assert [g["place_id"] for g in goals] == meta["stops"], task["id"]
+        assert {g["path_prefix"] for g in task["web_goals"]} == {f"/wiki/{wiki.by_poi_id(p.id).slug}" for p in stops}

@@ -2,7 +2,8 @@
 
 Shopping (played through the real server, Chromium and street graph, graded from the run directory): the
 oracle of a budget task passes; ordering both items at the nearest store that has them (ignoring the budget)
-fails, and so does ordering at the right store but walking to that nearer one. Cooking (graded offline with
+fails, and so does ordering at the right store but walking to that nearer one. Navigation (the same way):
+three stops in the wiki's order pass; the same walk in the order the intent lists them fails. Cooking (graded offline with
 the kitchen's own checks on real simulator outcomes): a recipe told apart only by a step passes with its own
 steps and fails with its look-alike's, and its intent names no missing food although two must be ordered.
 """
@@ -67,7 +68,7 @@ def with_store(task: Task, order_at: str, walk_to: str) -> Task:
 
 
 def play(task: Task, tmp_path, name: str) -> bool:
-    folder = tmp_path / name / "tasks" / "shopping"
+    folder = tmp_path / name / "tasks" / task.domain
     folder.mkdir(parents=True)
     (folder / "t.json").write_text(json.dumps([task.model_dump(mode="json")]), "utf-8")
     run = tmp_path / name / "run"
@@ -133,3 +134,20 @@ def test_a_step_told_task_passes_its_own_steps_and_fails_its_look_alikes(store):
         # the other half, the orders: cooking without the missing foods cannot even be done in this kitchen
         assert recipe_outcome(scene, recipe_ops(recipe), []) is None, task.id
     assert checked >= 4
+
+
+@needs_browser
+def test_stops_in_the_intents_order_fail_and_in_the_wikis_order_pass(store, tmp_path):
+    world = get_world()
+    task = next(t for t in sorted(store.all("navigation"), key=lambda t: t.id) if t.difficulty == "hard")
+    meta = task.metadata
+    assert play(task, tmp_path, "oracle-stops")
+    origin = world.places.get(meta["origin_id"]) or world.place(meta["origin_id"])
+    stops = [origin, *(world.places[p] for p in meta["listed"])]
+    nodes = [origin.node]
+    for a, b in zip(stops, stops[1:]):
+        nodes += world.directions(a.id, b.id).nodes[1:]
+    walk = [c for c in task.oracle if c.tool not in ("street_move", "street_stop", "finish_episode")]
+    walk += [ToolCall(tool="street_move", args={"neighbour": n}) for n in nodes[1:]]
+    walk += [ToolCall(tool="street_stop", args={}), ToolCall(tool="finish_episode", args={})]
+    assert not play(task.model_copy(update={"oracle": walk}), tmp_path, "listed-order")
