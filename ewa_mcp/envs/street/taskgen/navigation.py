@@ -16,6 +16,7 @@ from ..world import get_world
 from ewa_mcp.core.taskmodel import (DirectionsShown, PageVisited, PassedPlace, ReachedPlace, StartState, StreetStart,
                                     Task, WebStart)
 from ewa_mcp.websites.map.places import WorldAdapter
+from ewa_mcp.websites.wiki import store as wiki
 from ewa_mcp.taskgen.common import WALK_RULE, call, rng_for, site_url, step_budget
 
 PER_CITY = {"manhattan": 44, "philadelphia": 36, "boston": 36, "pittsburgh": 36}
@@ -101,8 +102,6 @@ STOPS_TEMPLATES = [
 
 def stop_years(places: list[Any]) -> list[tuple[Any, int]]:
     """Landmarks with a wiki article that states the year they were built."""
-    from ewa_mcp.websites.wiki import store as wiki
-
     out = []
     for p in places:
         article = wiki.by_poi_id(p.id)
@@ -113,12 +112,16 @@ def stop_years(places: list[Any]) -> list[tuple[Any, int]]:
     return out
 
 
+def article_slug(place: Any) -> str:
+    article = wiki.by_poi_id(place.id)
+    assert article is not None, place.id  # stop_years keeps only landmarks with an article
+    return article.slug
+
+
 def stops_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any], count: int) -> list[Task]:
     """Hard by composition (issue 26, principle 6): three stops whose order the wiki gives, not the intent
     (oldest first by the year built), ending at the newest. The intent lists them in another order; the
     walk that takes the nearest stop first ends elsewhere; each leg is a walk of its own."""
-    from ewa_mcp.websites.wiki import store as wiki
-
     rng = rng_for("navigation-via", city)
     dated = [(p, y) for p, y in stop_years([p for p in places if p.kind not in ("intersection", "address")])
              if resolves_to(resolver, p)]
@@ -156,7 +159,7 @@ def stops_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any]
         used.add(key)
         n = len(tasks)
         nodes = legs[0].nodes + [x for leg in legs[1:] for x in leg.nodes[1:]]
-        oracle = [*[call("browser_goto", url=site_url("wiki", f"/wiki/{wiki.by_poi_id(p.id).slug}")) for p in listed],
+        oracle = [*[call("browser_goto", url=site_url("wiki", f"/wiki/{article_slug(p)}")) for p in listed],
                   *[call("browser_goto", url=site_url("map", "/directions", **{"from": a.name, "to": b.name}))
                     for a, b in zip([origin, *order], order)],
                   call("switch_environment", target="embodied", message="walk past the stops"),
@@ -169,7 +172,7 @@ def stops_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any]
             difficulty="hard",
             intent=task_rng.choice(STOPS_TEMPLATES).format(origin=describe(origin), stops=stops),
             start=start_state(world, city, origin, task_rng),
-            web_goals=[PageVisited(site="wiki", path_prefix=f"/wiki/{wiki.by_poi_id(p.id).slug}") for p in order],
+            web_goals=[PageVisited(site="wiki", path_prefix=f"/wiki/{article_slug(p)}") for p in order],
             embodied_goals=[*[PassedPlace(city=city, node=p.node, lat=world.node(p.node).lat,
                                           lng=world.node(p.node).lng, place_id=p.id) for p in order[:-1]],
                             reached(world, city, order[-1])],
