@@ -8,6 +8,7 @@ from pathlib import Path
 import pytest
 
 from ewa_mcp.envs.street.world import get_world
+from ewa_mcp.graders.textnorm import contains_phrase
 from ewa_mcp.websites.wiki import store as wiki
 
 TASKS_DIR = Path(__file__).resolve().parents[2] / "tasks"
@@ -24,19 +25,68 @@ def test_at_least_15_percent_hard(domain: str) -> None:
     assert len(hard) >= 0.15 * len(tasks), f"{len(hard)} of {len(tasks)} {domain} tasks are hard"
 
 
-def test_hard_shopping_orders_two_products_at_two_stores() -> None:
+def test_hard_shopping_orders_two_products_at_one_store_within_a_budget() -> None:
     for task in (t for t in suite("shopping") if t["difficulty"] == "hard"):
         orders = [g for g in task["web_goals"] if g["kind"] == "order_placed"]
-        assert len(orders) == 2 and orders[0]["store_id"] != orders[1]["store_id"], task["id"]
-        assert task["embodied_goals"][0]["place_id"] in {o["store_id"] for o in orders}
+        assert len(orders) == 2 and orders[0]["store_id"] == orders[1]["store_id"], task["id"]
+        assert orders[0]["product_id"] != orders[1]["product_id"], task["id"]
+        assert task["embodied_goals"][0]["place_id"] == orders[0]["store_id"], task["id"]
+        assert task["embodied_goals"][0]["must_match_order_store"], task["id"]
+        assert f"${task['metadata']['budget']:.2f}" in task["intent"], task["id"]
 
 
-def test_hard_traveling_describes_the_landmark_only_by_its_look() -> None:
+def walk_m(world, start: str, node: str) -> float:
+    try:
+        return world.directions(start, node).distance_m
+    except ValueError:
+        return float("inf")
+
+
+def test_hard_traveling_needs_the_wiki_fact_and_the_range_together() -> None:
+    """Hard by composition (issue 26, principle 6): no address or name; the landmark is the only one within
+    the stated walk of the corner that has the stated wiki fact, while another landmark of its city has the
+    fact (farther away) and another landmark stands within the range: neither cue alone singles it out."""
+    from ewa_mcp.envs.street.taskgen.traveling import _fact_text, landmarks_of
+
     world = get_world()
-    for task in (t for t in suite("traveling") if t["difficulty"] == "hard"):
+    hard = [t for t in suite("traveling") if t["difficulty"] == "hard"]
+    assert len(hard) >= 25
+    for task in hard:
         place = world.places[task["metadata"]["poi_id"]]
         article = wiki.by_poi_id(place.id)
-        intent = task["intent"].casefold()
-        for giveaway in (place.address, place.name, article.title, *article.aliases):
-            assert giveaway.casefold() not in intent, (task["id"], giveaway)
-        assert place.description_hint in task["intent"]
+        for giveaway in (place.address, place.name, article.title, *article.aliases, place.description_hint):
+            assert not contains_phrase(task["intent"], giveaway), (task["id"], giveaway)  # as words: "UN" ≠ "counts"
+        cue, start = task["metadata"]["cue"], task["start"]["embodied"]["node"]
+        assert cue["value"] in task["intent"] and f"within about {cue['range_m']} m" in task["intent"], task["id"]
+        assert cue["key"] != task["metadata"]["question"], task["id"]
+        peers = [p for p in landmarks_of(world) if p.city == place.city and p.id != place.id
+                 and wiki.by_poi_id(p.id) is not None]
+        sharing = [p for p in peers if cue["key"] in p.facts and _fact_text(cue["key"], p.facts[cue["key"]]) == cue["value"]]
+        assert sharing, task["id"]  # the fact alone does not single it out
+        assert all(walk_m(world, start, p.node) > cue["range_m"] + 100 for p in sharing), task["id"]
+        assert any(walk_m(world, start, p.node) < cue["range_m"] for p in peers), task["id"]  # nor the range
+        assert walk_m(world, start, place.node) <= cue["range_m"] - 50, task["id"]
+
+
+def test_hard_navigation_order_comes_from_the_wiki_not_the_intent() -> None:
+    """Three stops, oldest building first by the wiki's year built, ending at the newest: the intent's own
+    order and the nearest-stop-first walk end elsewhere; the goals pass the first two and end at the newest."""
+    from ewa_mcp.envs.street.taskgen.navigation import nearest_first
+
+    world = get_world()
+    hard = [t for t in suite("navigation") if t["difficulty"] == "hard"]
+    assert len(hard) >= 30
+    for task in hard:
+        meta = task["metadata"]
+        stops = [world.places[p] for p in meta["stops"]]
+        years = [int(wiki.by_poi_id(p.id).infobox["Year built"]) for p in stops]
+        assert years == meta["years"] and all(b - a >= 5 for a, b in zip(years, years[1:])), task["id"]
+        assert meta["listed"][-1] != meta["stops"][-1], task["id"]
+        positions = [task["intent"].index(p.name) for p in stops]
+        assert sorted(positions) != positions or meta["listed"] != meta["stops"], task["id"]
+        origin = world.places.get(meta["origin_id"]) or world.place(meta["origin_id"])
+        assert nearest_first(world, origin, stops) != meta["stops"][-1], task["id"]
+        goals = task["embodied_goals"]
+        assert [g["kind"] for g in goals] == ["passed_place", "passed_place", "reached_place"], task["id"]
+        assert [g["place_id"] for g in goals] == meta["stops"], task["id"]
+        assert {g["path_prefix"] for g in task["web_goals"]} == {f"/wiki/{wiki.by_poi_id(p.id).slug}" for p in stops}

@@ -75,12 +75,16 @@ def wrong_answers(task: dict) -> dict[str, object]:
         return {"nearest seller ignoring stock": nearest(task, sellers(meta["product_id"], meta["size"])),
                 "cheapest store": catalog.cheapest_store(meta["product_id"], meta["size"])}
     if kind == "pair":
-        out = {}
-        for i, (product_id, size) in enumerate(zip(meta["products"], meta["sizes"])):
-            for name, store in ignore_cheapest(task, product_id, size).items():
-                out[f"product {i + 1}: {name}"] = store
-        out["walk to the nearest store of all"] = nearest(task, list(meta["store_nodes"]))
-        return out
+        # Hard by composition: both items in one order at one store, within a budget for the two.
+        both = [sid for sid, total in meta["totals"].items()
+                if all(catalog.stock(p, size, sid) > 0 for p, size in zip(meta["products"], meta["sizes"]))]
+        within = [sid for sid in both if meta["totals"][sid] <= meta["budget"]]
+        if meta["named_stores"] is not None:
+            return {"the nearer of the two named stores": nearest(task, meta["named_stores"])}
+        return {"nearest store with both in stock, ignoring the budget": nearest(task, both),
+                "the store where the two cost least together": min(within, key=lambda s: meta["totals"][s]),
+                **{f"the cheapest store of product {i + 1} alone": catalog.cheapest_store(p, size)
+                   for i, (p, size) in enumerate(zip(meta["products"], meta["sizes"]))}}
     raise AssertionError(f"unknown shopping template in {task['id']}")
 
 
@@ -88,10 +92,6 @@ def expected(task: dict, strategy: str) -> object:
     meta = task["metadata"]
     if task["id"].startswith("shopping-size-") and "size" in strategy:
         return meta["size"]
-    if task["id"].startswith("shopping-pair-"):
-        if strategy.startswith("walk"):
-            return meta["nearer_store"]
-        return meta["stores"][int(strategy.split()[1][0]) - 1]
     return meta["store_id"]
 
 
@@ -114,7 +114,7 @@ def _share(values: list) -> float:
 @pytest.mark.parametrize("family", ["cheapest", "size", "nearest", "pair"])
 def test_no_store_is_the_target_of_most_tasks_and_none_never(family: str) -> None:
     tasks = [t for t in TASKS if t["id"].startswith(f"shopping-{family}-")]
-    targets = [t["metadata"].get("nearer_store") or t["metadata"]["store_id"] for t in tasks]
+    targets = [t["metadata"]["store_id"] for t in tasks]
     stores = [s.id for s in catalog.load_stores()]
     assert set(targets) == set(stores), f"{family}: never a target: {set(stores) - set(targets)}"
     assert _share(targets) <= 0.35, f"{family}: one store is the target of {_share(targets):.0%} of the tasks"
@@ -156,11 +156,26 @@ def test_nearest_store_in_stock_is_not_the_nearest_seller() -> None:
 
 
 def test_position_in_the_intent_never_gives_the_answer_away() -> None:
-    """Calories: the lower product is named first in some tasks and second in others; pair: the walk ends at
-    the first product's store in some tasks and at the second's in others."""
+    """Calories: the lower product is named first in some tasks and second in others; pair (two stores named):
+    the answer is named first in some tasks and second in others."""
     calories = [t for t in TASKS if t["id"].startswith("shopping-calories-")]
     first = [t["metadata"]["named_products"][0] == t["metadata"]["product_id"] for t in calories]
     assert 0.3 <= sum(first) / len(first) <= 0.7, f"lower product named first in {sum(first)} of {len(first)}"
-    pairs = [t for t in TASKS if t["id"].startswith("shopping-pair-")]
-    first = [t["metadata"]["nearer_store"] == t["metadata"]["stores"][0] for t in pairs]
-    assert 0.3 <= sum(first) / len(first) <= 0.7, f"walk ends at the first store in {sum(first)} of {len(first)}"
+    pairs = [t for t in TASKS if t["id"].startswith("shopping-pair-") and t["metadata"]["named_stores"]]
+    first = [t["metadata"]["named_stores"][0] == t["metadata"]["store_id"] for t in pairs]
+    assert 0.3 <= sum(first) / len(first) <= 0.7, f"answer named first in {sum(first)} of {len(pairs)}"
+
+
+def test_pair_budget_decides_with_a_margin() -> None:
+    """Hard pair tasks: the pickup store sells both in stock within the budget, every total the budget rules
+    out is over it by 25 cents or more (never by a cent), and a nearer store that sells both is over it."""
+    for task in (t for t in TASKS if t["id"].startswith("shopping-pair-")):
+        meta = task["metadata"]
+        totals, budget, answer = meta["totals"], meta["budget"], meta["store_id"]
+        assert totals[answer] <= budget - 0.25, task["id"]
+        assert all(catalog.stock(p, s, answer) > 0 for p, s in zip(meta["products"], meta["sizes"])), task["id"]
+        nearer = [sid for sid in (meta["named_stores"] or totals) if distance(task, sid) < distance(task, answer)]
+        assert nearer and all(totals[sid] >= budget + 0.25 for sid in nearer
+                              if all(catalog.stock(p, s, sid) > 0 for p, s in zip(meta["products"], meta["sizes"]))
+                              ), task["id"]
+        assert any(totals[sid] >= budget + 0.25 for sid in nearer), task["id"]

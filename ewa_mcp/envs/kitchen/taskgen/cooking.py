@@ -5,8 +5,11 @@ missing food on the shop, for delivery to the kitchen, first.
 Three templates, each with its difficulty:
   * cook (easy): one constraint (a name no other recipe has: asked by a word of it), every food in the kitchen;
   * buy (medium): one constraint, one needed food missing and ordered for delivery;
-  * hard: two constraints that together single out the recipe, two needed foods missing and
-    ordered for delivery (in one order).
+  * hard (by composition, issue 26): the recipe is told from its look-alike only by how one of its steps
+    treats a food both use (cooked in the pan, toasted, kept raw; no search filter says it), or, where no
+    step tells them apart, by two constraints that only together single it out; two needed foods are
+    missing, and the intent does not say which: the agent compares the recipe's kitchen foods with the
+    kitchen, then orders exactly those for delivery (in one order) before it cooks.
 """
 
 from __future__ import annotations
@@ -178,6 +181,53 @@ def two_constraints(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dic
     return [(suffix, merged) for _, suffix, merged in pairs]
 
 
+def food_treatments(ops: list[dict[str, Any]]) -> dict[str, tuple[bool, str | None, str | None]]:
+    """Per food the recipe works with: (cut or cracked, where it cooks or None for raw, where it is served)."""
+    out: dict[str, tuple[bool, str | None, str | None]] = {}
+    for op in ops:
+        obj = op.get("object", "")
+        food = PIECE_SOURCE.get(obj, obj)
+        if food not in FOODS:
+            continue
+        cut, cook, served = out.get(food, (False, None, None))
+        if op["op"] in ("slice", "crack"):
+            cut = True
+        elif op["op"] == "cook":
+            cook = op.get("vessel") or op.get("method")
+        elif op["op"] == "put" and op.get("receptacle") in ("Plate", "Bowl"):
+            served = op["receptacle"]
+        out[food] = (cut, cook, served)
+    return out
+
+
+COOKED_IN = {"toaster": "toasts the {f} in the toaster", "microwave": "cooks the {f} in the microwave",
+             "Pan": "cooks the {f} in a pan on the stove", "Pot": "cooks the {f} in a pot on the stove"}
+
+
+def telling_step(recipe: dict[str, Any], catalog: Any) -> str | None:
+    """How one of the recipe's steps treats a food that every look-alike also uses but treats otherwise
+    (cooked another way or not at all, cut or left whole, served on a plate or in a bowl), in plain words:
+    "the version that keeps the tomato raw". No search filter says this; only the steps do (issue 26,
+    principle 6: a recipe told apart only by a step). None when no food tells them apart this way."""
+    mine = food_treatments(recipe_ops(recipe))
+    rivals = [food_treatments(recipe_ops(r)) for r in catalog.recipes
+              if r["name"] == recipe["name"] and r["id"] != recipe["id"]]
+    if not rivals:
+        return None
+    for food, (cut, cook, served) in sorted(mine.items()):
+        f = food.lower()
+        theirs = [r.get(food) for r in rivals]
+        if any(t is None for t in theirs):
+            continue  # a food the look-alike lacks is what an ingredient filter tells apart
+        if all(t[1] != cook for t in theirs if t):
+            return COOKED_IN[cook].format(f=f) if cook in COOKED_IN else f"keeps the {f} raw"
+        if all(t[0] != cut for t in theirs if t):
+            return f"{'cracks' if food == 'Egg' else 'cuts'} the {f}" if cut else f"keeps the {f} whole"
+        if served and all(t[2] not in (None, served) for t in theirs if t):
+            return f"serves the {f} {'on a plate' if served == 'Plate' else 'in a bowl'}"
+    return None
+
+
 def recipe_web_oracle(recipe: dict[str, Any], filters: dict[str, Any]) -> list[Any]:
     """Search with the constraint's filter, open the recipe, go to its last step.
 
@@ -190,6 +240,14 @@ def recipe_web_oracle(recipe: dict[str, Any], filters: dict[str, Any]) -> list[A
     if steps > 1:
         calls.append(call("browser_goto", url=site_url("recipes", f"/recipe/{recipe['id']}", step=steps)))
     return calls
+
+
+def step_web_oracle(recipe: dict[str, Any]) -> list[Any]:
+    """Search the name, then open the one recipe whose steps match and go to its last step (no filter
+    tells the look-alikes apart; the oracle knows which one it is)."""
+    steps = len(recipe["steps"])
+    return [call("browser_goto", url=site_url("recipes", "/", q=recipe["name"])),
+            call("browser_goto", url=site_url("recipes", f"/recipe/{recipe['id']}", **({"step": steps} if steps > 1 else {})))]
 
 
 def delivery_store(products: list[str]) -> tuple[str, str, list[str]] | None:
@@ -257,7 +315,9 @@ def kitchen_goals(recipe: dict[str, Any], scene: str, buy: list[str]) -> list[An
 
 
 def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str, Any], n: int,
-              buy: list[str] | None = None, kind: str | None = None) -> Task | None:
+              buy: list[str] | None = None, kind: str | None = None, step: str | None = None) -> Task | None:
+    """One task. ``step`` (hard only): the recipe is told from its look-alikes by this step alone, not by
+    ``suffix``'s search filters."""
     buy = list(buy or [])
     kind = kind or ("buy" if buy else "cook")
     ops = recipe_ops(recipe)
@@ -270,10 +330,12 @@ def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str
     if buy and delivery_store(products) is None:
         return None
     kitchen = [call(c["tool"], **c["args"]) for c in plan_ops(scene, ops, delivered_types=buy)]
-    web = recipe_web_oracle(recipe, filters)
+    web = recipe_web_oracle(recipe, filters) if step is None else step_web_oracle(recipe)
     web_goals: list[Any] = [RecipeCompleted(recipe_id=recipe["id"])]
     word = filters.get("q")
-    if word:
+    if step is not None:
+        intent = f"Cook {recipe['name']}. More than one recipe has that name: follow the one that {step}."
+    elif word:
         intent = (f'Cook the dish whose name has the word "{word.capitalize()}" and that fits this: {suffix}. '
                   f'Several recipes have "{word.capitalize()}" in their name; only one fits.')
     else:
@@ -281,7 +343,12 @@ def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str
     if buy:
         web += buy_oracle(products)
         web_goals += [OrderPlaced(product_id=product) for product in products]
-        if len(buy) == 1:
+        if kind == "hard":
+            # Hard: the missing foods are not named. The agent reads what the recipe's kitchen steps need,
+            # looks in the kitchen for what is there, and orders the rest (web, kitchen, web, kitchen).
+            intent += (" Your kitchen lacks some of the foods the recipe's kitchen steps need: find out which, "
+                       "and order exactly those from the shop for delivery to your kitchen before you cook.")
+        elif len(buy) == 1:
             intent += f" Your kitchen has no {buy[0]}: order it from the shop for delivery to your kitchen first."
         else:
             missing = " and no ".join(buy)
@@ -305,7 +372,8 @@ def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str
         step_limit=step_budget("cooking", DIFFICULTY[kind], len(oracle) + len(recipe["steps"])),
         oracle=oracle,
         metadata={"recipe_id": recipe["id"], "recipe_name": recipe["name"], "scene": scene,
-                  "constraint": suffix or None, "pair_id": recipe.get("pair_id"), "name_word": word or None,
+                  "constraint": (None if step else suffix) or None, "telling_step": step,
+                  "pair_id": recipe.get("pair_id"), "name_word": word or None,
                   "buy": (buy[0] if len(buy) == 1 else buy) if buy else None,
                   "kitchen_steps": steps["kitchen"], "not_kitchen_steps": steps["not_kitchen"]},
     )
@@ -330,6 +398,8 @@ def generate() -> list[Task]:
         # Hard: two constraints, two needed foods missing (replacing cook tasks, so the suite keeps its size).
         hard = 0
         pairs = two_constraints(recipe, catalog)
+        # Told apart by a step where one is (the steps must be read); else by two constraints together.
+        step = telling_step(recipe, catalog)
         if pairs and len(foods) >= 2:
             for scene in scenes:
                 if hard >= HARD_PER_RECIPE:
@@ -338,7 +408,7 @@ def generate() -> list[Task]:
                 if len(missing) != 2:
                     continue
                 suffix, filters = pairs[hard % len(pairs)]
-                task = make_task(recipe, scene, suffix, filters, hard, buy=missing, kind="hard")
+                task = make_task(recipe, scene, suffix, filters, hard, buy=missing, kind="hard", step=step)
                 if task is not None:
                     tasks.append(task)
                     hard += 1

@@ -2,23 +2,28 @@
 end the walk at the destination. Origins and destinations are landmarks, addresses and intersections
 in all four cities; the start heading is drawn from the streets at the origin, never from the route.
 
-Difficulty: a direct route with at most one turn is easy, one with more turns medium; a walk that
-must pass a named waypoint on the way (directions via it, graded with a passed_place goal) is hard."""
+Difficulty: a direct route with at most one turn is easy, one with more turns medium. Hard is hard by
+composition (issue 26, principle 6): three named stops visited in the order the wiki gives (oldest
+building first, by the year built), ending at the newest; the intent lists them in another order
+(passed_place goals for the first two, reached_place for the last, a wiki page view of each)."""
 
 from __future__ import annotations
 
 from typing import Any
 
-from ..world import directions_via, get_world
-from ewa_mcp.core.taskmodel import DirectionsShown, PassedPlace, ReachedPlace, StartState, StreetStart, Task, WebStart
+from ewa_mcp.geometry import haversine_m
+from ..world import get_world
+from ewa_mcp.core.taskmodel import (DirectionsShown, PageVisited, PassedPlace, ReachedPlace, StartState, StreetStart,
+                                    Task, WebStart)
 from ewa_mcp.websites.map.places import WorldAdapter
+from ewa_mcp.websites.wiki import store as wiki
 from ewa_mcp.taskgen.common import WALK_RULE, call, rng_for, site_url, step_budget
 
 PER_CITY = {"manhattan": 44, "philadelphia": 36, "boston": 36, "pittsburgh": 36}
-# Hard tasks (via a waypoint) per city: 34 of 186 navigation tasks, 18 %.
+# Hard tasks (three stops in the wiki's order) per city: 34 of 186 navigation tasks, 18 %.
 PER_CITY_VIA = {"manhattan": 10, "philadelphia": 8, "boston": 8, "pittsburgh": 8}
 MIN_M, MAX_M = 250.0, 1300.0
-VIA_MIN_LEG_M, VIA_MAX_M = 150.0, 1600.0
+VIA_MIN_LEG_M = 150.0  # the shortest leg between two stops
 EASY_MAX_TURNS = 1
 TEMPLATES = [
     "Starting at {origin}, guide me step-by-step to {destination}. Get walking directions on the map site, "
@@ -26,12 +31,6 @@ TEMPLATES = [
     "Show me the fastest walking route from {origin} to {destination} on the map, then follow it on foot. "
     + WALK_RULE,
     "I am at {origin}. Look up how to walk to {destination} online, then walk there. " + WALK_RULE,
-]
-VIA_TEMPLATES = [
-    "Starting at {origin}, walk to {destination}, passing {waypoint} on the way. Get walking directions via "
-    "{waypoint} on the map site, then walk that route. " + WALK_RULE,
-    "I am at {origin} and want to see {waypoint} on my way to {destination}. Look up a walking route that passes "
-    "it on the map, then follow it on foot. " + WALK_RULE,
 ]
 
 
@@ -90,60 +89,111 @@ def resolves_to(resolver: WorldAdapter, place: Any) -> bool:
     return found is not None and found.id == place.id
 
 
-def via_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any], count: int) -> list[Task]:
-    """Hard tasks: origin -> named waypoint -> destination, the waypoint off the direct route."""
-    rng = rng_for("navigation-via", city)
-    named = [p for p in places if p.kind not in ("intersection", "address")]
-    tasks: list[Task] = []
-    used: set[tuple[str, str, str]] = set()
-    tries = 0
-    while len(tasks) < count and tries < count * 300:
-        tries += 1
-        origin, dest = rng.sample(places, 2)
-        waypoint = rng.choice(named)
-        ids = (origin.id, waypoint.id, dest.id)
-        if len({origin.node, waypoint.node, dest.node}) < 3 or ids in used:
+STOPS_MAX_M = 1800.0  # the whole walk past three stops (the hard step budget fits it)
+STOPS_TEMPLATES = [
+    "Starting at {origin}, walk to {stops} in the order they were built, oldest first, by the year each was "
+    "built as the wiki gives it, and end your walk at the newest. Look the years up on the wiki; the map site "
+    "gives walking directions. " + WALK_RULE,
+    "I am at {origin} and want to see {stops}, from the oldest building to the newest (the wiki gives the year "
+    "each was built), ending at the newest. Look the years up on the wiki, get walking directions on the map "
+    "site, then walk. " + WALK_RULE,
+]
+
+
+def stop_years(places: list[Any]) -> list[tuple[Any, int]]:
+    """Landmarks with a wiki article that states the year they were built."""
+    out = []
+    for p in places:
+        article = wiki.by_poi_id(p.id)
+        year = p.facts.get("year_built")
+        if article is None or not isinstance(year, int) or str(year) != article.infobox.get("Year built"):
             continue
-        if not all(resolves_to(resolver, p) for p in (origin, waypoint, dest)):
+        out.append((p, year))
+    return out
+
+
+def article_slug(place: Any) -> str:
+    article = wiki.by_poi_id(place.id)
+    assert article is not None, place.id  # stop_years keeps only landmarks with an article
+    return article.slug
+
+
+def stops_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any], count: int) -> list[Task]:
+    """Hard by composition (issue 26, principle 6): three stops whose order the wiki gives, not the intent
+    (oldest first by the year built), ending at the newest. The intent lists them in another order; the
+    walk that takes the nearest stop first ends elsewhere; each leg is a walk of its own."""
+    rng = rng_for("navigation-via", city)
+    dated = [(p, y) for p, y in stop_years([p for p in places if p.kind not in ("intersection", "address")])
+             if resolves_to(resolver, p)]
+    tasks: list[Task] = []
+    used: set[tuple[str, ...]] = set()
+    tries = 0
+    while len(tasks) < count and tries < count * 300 and len(dated) >= 3:
+        tries += 1
+        origin = rng.choice(places)
+        here = world.node(origin.node)
+        # stops near the origin (as the crow flies), so the three legs fit one walk
+        near = [(p, y) for p, y in dated if haversine_m(here.lat, here.lng, p.lat, p.lng) <= STOPS_MAX_M / 3]
+        if len(near) < 3:
+            continue
+        chosen = rng.sample(near, 3)
+        years = sorted(y for _, y in chosen)
+        if years[1] - years[0] < 5 or years[2] - years[1] < 5:
+            continue  # the order must be plain from the years
+        order = [p for p, _ in sorted(chosen, key=lambda c: c[1])]
+        key = (origin.id, *sorted(p.id for p in order))
+        if key in used or len({origin.node, *(p.node for p in order)}) < 4 or not resolves_to(resolver, origin):
             continue
         try:
-            direct = world.directions(origin.id, dest.id)
-            first, second = world.directions(origin.id, waypoint.id), world.directions(waypoint.id, dest.id)
+            legs = [world.directions(a.id, b.id) for a, b in zip([origin, *order], order)]
+            greedy_end = nearest_first(world, origin, order)
         except ValueError:
             continue
-        if min(first.distance_m, second.distance_m) < VIA_MIN_LEG_M or first.distance_m + second.distance_m > VIA_MAX_M:
+        total = sum(leg.distance_m for leg in legs)
+        if min(leg.distance_m for leg in legs) < VIA_MIN_LEG_M or total > STOPS_MAX_M:
             continue
-        # The waypoint must be a detour: the direct route never comes near it, so passing it is a choice.
-        if waypoint.node in direct.nodes or first.distance_m + second.distance_m < direct.distance_m + 100:
-            continue
-        route = directions_via(world, origin.id, waypoint.id, dest.id)
-        if len(set(route.nodes)) < len(route.nodes):
-            continue  # the walk would double back on itself after the waypoint
-        used.add(ids)
+        listed = order[:]
+        rng.shuffle(listed)
+        if listed[-1].id == order[-1].id or greedy_end == order[-1].id:
+            continue  # neither the intent's order nor "nearest first" ends at the newest
+        used.add(key)
         n = len(tasks)
-        oracle = [call("browser_goto", url=site_url("map", "/directions", **{"from": origin.name, "via": waypoint.name,
-                                                                              "to": dest.name})),
-                  call("switch_environment", target="embodied", message="walk the route"),
-                  *walk_oracle(route.nodes), call("finish_episode")]
+        nodes = legs[0].nodes + [x for leg in legs[1:] for x in leg.nodes[1:]]
+        oracle = [*[call("browser_goto", url=site_url("wiki", f"/wiki/{article_slug(p)}")) for p in listed],
+                  *[call("browser_goto", url=site_url("map", "/directions", **{"from": a.name, "to": b.name}))
+                    for a, b in zip([origin, *order], order)],
+                  call("switch_environment", target="embodied", message="walk past the stops"),
+                  *walk_oracle(nodes), call("finish_episode")]
         task_rng = rng_for("navigation-via", city, n)
-        way = world.node(waypoint.node)
+        stops = ", ".join(describe(p) for p in listed[:-1]) + " and " + describe(listed[-1])
         tasks.append(Task(
             id=f"navigation-via-{city}-{n:03d}",
             domain="navigation",
             difficulty="hard",
-            intent=task_rng.choice(VIA_TEMPLATES).format(origin=describe(origin), destination=describe(dest),
-                                                         waypoint=describe(waypoint)),
+            intent=task_rng.choice(STOPS_TEMPLATES).format(origin=describe(origin), stops=stops),
             start=start_state(world, city, origin, task_rng),
-            web_goals=[DirectionsShown(origin=origin.id, destination=waypoint.id),
-                       DirectionsShown(origin=waypoint.id, destination=dest.id)],
-            embodied_goals=[PassedPlace(city=city, node=waypoint.node, lat=way.lat, lng=way.lng, place_id=waypoint.id),
-                            reached(world, city, dest)],
+            web_goals=[PageVisited(site="wiki", path_prefix=f"/wiki/{article_slug(p)}") for p in order],
+            embodied_goals=[*[PassedPlace(city=city, node=p.node, lat=world.node(p.node).lat,
+                                          lng=world.node(p.node).lng, place_id=p.id) for p in order[:-1]],
+                            reached(world, city, order[-1])],
             step_limit=step_budget("navigation", "hard", len(oracle)),
             oracle=oracle,
-            metadata=metadata(world, origin, dest, route, waypoint_node=waypoint.node,
-                              direct_route_m=direct.distance_m),
+            metadata={"shortest_path_m": round(total, 1), "start_lat": world.node(origin.node).lat,
+                      "start_lng": world.node(origin.node).lng, "origin_node": origin.node,
+                      "destination_node": order[-1].node, "route_steps": sum(len(leg.steps) for leg in legs),
+                      "turns": sum(turns(leg) for leg in legs), "stops": [p.id for p in order],
+                      "listed": [p.id for p in listed], "years": years, "origin_id": origin.id},
         ))
     return tasks
+
+
+def nearest_first(world: Any, origin: Any, stops: list[Any]) -> str:
+    """Where a walk that always goes to the nearest stop not yet seen ends (the stop's id)."""
+    here, left = origin, list(stops)
+    while left:
+        here = min(left, key=lambda p: world.directions(here.id, p.id).distance_m)
+        left.remove(here)
+    return str(here.id)
 
 
 def generate(cities: list[str] | None = None) -> list[Task]:
@@ -194,5 +244,5 @@ def generate(cities: list[str] | None = None) -> list[Task]:
                 metadata=metadata(world, origin, dest, route),
             ))
             made += 1
-        tasks.extend(via_tasks(world, resolver, city, places, PER_CITY_VIA[city]))
+        tasks.extend(stops_tasks(world, resolver, city, places, PER_CITY_VIA[city]))
     return tasks

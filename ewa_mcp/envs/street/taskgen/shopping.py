@@ -3,6 +3,7 @@ get directions, and walk to that very store (or walk first, then order)."""
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 from ewa_mcp.graders.textnorm import is_number, tokens
@@ -14,6 +15,11 @@ from ewa_mcp.taskgen.common import WALK_RULE, call, ref, rng_for, site_url, step
 
 PER_TEMPLATE = 60
 MAX_WALK_M = 2200.0
+# Hard pair tasks: no total within this many dollars of the budget, and no tie for "cheapest for the two".
+PAIR_MARGIN = 0.25
+PAIR_TRIES = 4000
+# Of the draws, the share in the named-stores form (which any store can answer, where prices favour some).
+NAMED_SHARE = 0.1  # few draws fit every part of a pair task; enough of them to spread the pickup stores
 
 
 def buy_oracle(product: Any, size: str, store: Any) -> list[Any]:
@@ -91,7 +97,19 @@ class Context:
             if max(dists) <= MAX_WALK_M:
                 starts.append(p)
         self.starts = starts
+        # Hard pair tasks start from any named place in range (hotels, theaters, restaurants too): from the
+        # landmarks alone, a store far from all of them is almost never the nearest within a budget.
+        self.pair_starts = [p for p in sorted(self.world.places.values(), key=lambda p: p.id)
+                            if p.city == "manhattan" and p.kind not in ("store", "shop", "intersection", "address")
+                            and self._in_range(p)]
         self._walks: dict[tuple[Any, str], Any] = {}
+
+    def _in_range(self, place: Any) -> bool:
+        try:
+            return max(self.world.directions(place.node, s.node).distance_m
+                       for s in self.store_places.values()) <= MAX_WALK_M
+        except ValueError:
+            return False
 
     def store_counts(self) -> dict[str, int]:
         """A zero count per store (``balanced`` spreads task targets over them)."""
@@ -370,48 +388,108 @@ def nearest_tasks(ctx: Context) -> list[Task]:
     return out
 
 
+def pair_total(product: Any, size: str, other: Any, other_size: str, store_id: str) -> float | None:
+    """What the two items cost together at one store, or None when it does not sell both."""
+    a, b = product.offer(size, store_id), other.offer(other_size, store_id)
+    return None if a is None or b is None else round(a.price + b.price, 2)
+
+
+def pair_budget(total: float, over: list[float]) -> float | None:
+    """A round budget (whole or half dollars) that the answer's total fits with a margin and that every total
+    in ``over`` exceeds with a margin, or None when none fits (the budget must decide, never by a cent)."""
+    for step in (1.0, 0.5):
+        budget = math.ceil((total + PAIR_MARGIN) / step) * step
+        if all(t >= budget + PAIR_MARGIN for t in over):
+            return budget
+    return None
+
+
 def pair_tasks(ctx: Context) -> list[Task]:
-    """Hard: two products, each cheapest at a different store: two orders (one per pickup store, several
-    rounds of product page, cart and checkout), then a walk to whichever of the two stores is nearer."""
+    """Hard by composition (issue 26, principle 6): two products bought together in one order at one pickup
+    store, within a budget for the two, at the nearest store that can sell both within it. Each part
+    decides: the nearest store with both in stock is over the budget; the store where the two cost least
+    together is farther than the answer; the cheapest store of either item alone does not sell the other
+    within the budget (or at all). The agent must read both prices at every store, add them, check the
+    budget and the stock, and compare walks; every number it needs is on the product pages and the map."""
     out: list[Task] = []
     rng = rng_for("shopping", "pair")
     counts = ctx.store_counts()
-    parity = [0]
 
     def draw() -> Any:
         a, b = rng.sample(ctx.products, 2)
         size_a, size_b = rng.choice(a.sizes).label, rng.choice(b.sizes).label
-        store_a, store_b = catalog.cheapest_store(a.id, size_a), catalog.cheapest_store(b.id, size_b)
-        if store_a == store_b or not in_stock(a, size_a, store_a) or not in_stock(b, size_b, store_b):
+        start = rng.choice(ctx.pair_starts)
+        totals = {sid: pair_total(a, size_a, b, size_b, sid) for sid in ctx.stores}
+        stocked = sorted((sid for sid, t in totals.items() if t is not None and in_stock(a, size_a, sid)
+                          and in_stock(b, size_b, sid)), key=lambda sid: ctx.walk(start, sid).distance_m)
+        if rng.random() < NAMED_SHARE:
+            return named_draw(a, b, size_a, size_b, start, totals, stocked)
+        for k in range(1, len(stocked)):  # never the nearest store with both: the budget must decide
+            answer = stocked[k]
+            nearer = [totals[sid] for sid in stocked[:k]]
+            budget = pair_budget(totals[answer], nearer)  # type: ignore[arg-type]
+            if budget is None:
+                continue
+            within = [sid for sid in stocked if totals[sid] <= budget]  # type: ignore[operator]
+            farther = [sid for sid in within if sid != answer]
+            if not farther or ctx.nearest(start, within) != answer:
+                return None  # distance must decide among the stores within the budget, by 100 m or more
+            cheapest_pair = min(within, key=lambda sid: totals[sid])  # type: ignore[arg-type,return-value]
+            if cheapest_pair == answer or any(abs(totals[s] - totals[cheapest_pair]) < PAIR_MARGIN  # type: ignore[operator]
+                                              for s in within if s != cheapest_pair):
+                return None  # "cheapest for the two" must point elsewhere, unambiguously
+            if answer in (catalog.cheapest_store(a.id, size_a), catalog.cheapest_store(b.id, size_b)):
+                return None  # the cheapest store of one item alone is not the answer
+            return a, b, size_a, size_b, start, answer, budget, totals, None
+        return None
+
+    def named_draw(a: Any, b: Any, size_a: str, size_b: str, start: Any, totals: dict[str, float | None],
+                   stocked: list[str]) -> Any:
+        """The other form: two stores named, the one that can sell both within the budget is the answer, the
+        other is nearer (so "the nearer one" fails) and sells both, over the budget. Any store can be the
+        answer this way, which spreads the pickup stores where prices favour some stores (issue 26)."""
+        if not stocked:
             return None
-        start = rng.choice(ctx.starts)
-        if not (ctx.cheapest_is_decisive(start, a, size_a, store_a) and ctx.cheapest_is_decisive(start, b, size_b, store_b)):
+        answer: str = rng.choice(stocked)
+        rivals = [sid for sid in ctx.stores if sid != answer and totals[sid] is not None
+                  and ctx.walk(start, answer).distance_m - ctx.walk(start, sid).distance_m >= 100]
+        if not rivals:
             return None
-        near = ctx.nearest(start, [store_a, store_b])
-        if near is None:
-            return None  # too close to call: which store is nearer must be unambiguous
-        # "nearer" decides: the walk ends at the first product's store in half the tasks, the second's in the
-        # other half; and "of those two" decides: the nearer of the two is not the nearest store of all.
-        if near != (store_a if parity[0] == 0 else store_b) or ctx.nearest(start, list(ctx.stores)) in (None, near):
+        rival = rng.choice(rivals)
+        budget = pair_budget(totals[answer], [totals[rival]])  # type: ignore[arg-type,list-item]
+        if budget is None:
             return None
-        return a, b, size_a, size_b, store_a, store_b, start, near
+        named = [answer, rival]
+        rng.shuffle(named)  # the answer is named first in about half the tasks
+        return a, b, size_a, size_b, start, answer, budget, totals, named
 
     for n in slots(out):
-        parity[0] = n % 2
-        picked = balanced(draw, lambda c: c[7], counts)  # the walk's end spreads over the stores
+        picked = balanced(draw, lambda c: c[5], counts, tries=PAIR_TRIES)  # the pickup store spreads over the stores
         if picked is None:
             continue
-        a, b, size_a, size_b, store_a, store_b, start, near = picked
-        walks = {sid: ctx.walk(start, sid) for sid in (store_a, store_b)}
-        route, place = walks[near], ctx.store_places[near]
+        a, b, size_a, size_b, start, store_id, budget, totals, named = picked
+        store = ctx.stores[store_id]
+        route, place = ctx.walk(start, store_id), ctx.store_places[store_id]
         node = ctx.world.node(place.node)
-        intent = (f"Buy me {a.name} ({size_a}) and {b.name} ({size_b}), each for pickup at the store that sells "
-                  "that item cheapest (one order per store). Then walk from "
-                  f"{start.name} to whichever of those two stores is nearer on foot. {WALK_RULE}")
-        oracle = [*buy_oracle(a, size_a, ctx.stores[store_a]), *buy_oracle(b, size_b, ctx.stores[store_b]),
-                  call("browser_goto", url=site_url("map", "/directions", **{"from": start.name, "to": store_a})),
-                  call("browser_goto", url=site_url("map", "/directions", **{"from": start.name, "to": store_b})),
-                  call("switch_environment", target="embodied", message="walk to the nearer pickup store"),
+        money = f"${budget:.2f}"
+        if named is None:
+            intent = (f"Buy me {a.name} ({size_a}) and {b.name} ({size_b}) together, in one order for pickup at "
+                      f"one store, spending at most {money} on the two. Of the stores where both are in stock "
+                      f"and cost {money} or less together, pick the one nearest to {start.name} on foot; then "
+                      f"walk there from {start.name} to pick them up. {WALK_RULE}")
+        else:
+            first, second = (ctx.stores[sid].name for sid in named)
+            intent = (f"Buy me {a.name} ({size_a}) and {b.name} ({size_b}) together, in one order for pickup at "
+                      f"{first} or {second}: whichever of the two has both in stock and sells the two for "
+                      f"{money} or less in all. Then walk there from {start.name} to pick them up. {WALK_RULE}")
+        if any(t.intent == intent for t in out):
+            counts[store_id] -= 1
+            continue  # the same question twice
+        oracle = [*[c for product, size in ((a, size_a), (b, size_b)) for c in buy_oracle(product, size, store)[:4]],
+                  call("browser_goto", url=site_url("shop", "/checkout")),
+                  call("browser_click", element=ref("button", "Place order")),
+                  call("browser_goto", url=site_url("map", "/directions", **{"from": start.name, "to": store_id})),
+                  call("switch_environment", target="embodied", message="walk to the pickup store"),
                   *[call("street_move", neighbour=x) for x in route.nodes[1:]], call("street_stop"),
                   call("finish_episode")]
         links = ctx.world.neighbours(start.node)
@@ -420,16 +498,17 @@ def pair_tasks(ctx: Context) -> list[Task]:
             start=StartState(environment="web", web=WebStart(start_url="shop:/"),
                              embodied=StreetStart(city="manhattan", node=start.node,
                                                   heading=round(rng.choice([lk.heading for lk in links]), 1))),
-            web_goals=[OrderPlaced(product_id=a.id, size=size_a, quantity=1, store_id=store_a),
-                       OrderPlaced(product_id=b.id, size=size_b, quantity=1, store_id=store_b)],
+            web_goals=[OrderPlaced(product_id=a.id, size=size_a, quantity=1, store_id=store_id),
+                       OrderPlaced(product_id=b.id, size=size_b, quantity=1, store_id=store_id)],
             embodied_goals=[ReachedPlace(city="manhattan", node=place.node, lat=node.lat, lng=node.lng,
-                                         place_id=near)],
+                                         place_id=store_id, must_match_order_store=True)],
             step_limit=step_budget("shopping", "hard", len(oracle)),
             oracle=oracle,
             metadata={"store_nodes": {sid: p.node for sid, p in ctx.store_places.items()},
                       "shortest_path_m": route.distance_m, "start_lat": ctx.world.node(start.node).lat,
                       "start_lng": ctx.world.node(start.node).lng, "products": [a.id, b.id],
-                      "sizes": [size_a, size_b], "stores": [store_a, store_b], "nearer_store": near},
+                      "sizes": [size_a, size_b], "store_id": store_id, "budget": budget, "named_stores": named,
+                      "totals": {sid: t for sid, t in totals.items() if t is not None}},
         ))
     return out
 

@@ -8,6 +8,7 @@ from functools import lru_cache
 from typing import Any
 
 
+from ewa_mcp.geometry import haversine_m
 from ewa_mcp.graders.textnorm import contains_phrase, find_spans, tokens
 from ..world import get_world
 from ewa_mcp.core.taskmodel import PageVisited, ReachedPlace, StartState, StreetStart, Task, WebStart
@@ -170,13 +171,86 @@ def start_place(world: Any, target: Any, rng: Any, max_m: float = MAX_M) -> tupl
     return None
 
 
+# Hard tasks name the landmark by a wiki fact it shares with other landmarks of its city, and a walking range
+# from the corner that holds other landmarks: only the two together single it out (issue 26, principle 6).
+CUES = {"architectural_style": "is in the {v} style", "year_built": "was built in {v}",
+        "architect": "was designed by {v}"}
+CUE_LABEL = {"architectural_style": "its architectural style", "year_built": "the year it was built",
+             "architect": "its architect"}
+RANGE_MARGIN_M = 150.0
+CUE_MAX_M = 900.0  # the walk from the corner (the range holds other landmarks, so it is wider than by sight)  # a landmark sharing the fact lies this much beyond the range, at least
+
+
+def near_starts(world: Any, target: Any, rng: Any) -> list[tuple[Any, Any]]:
+    """Street corners MIN_M..CUE_MAX_M on foot from the landmark, in a seeded random order (drawn among the
+    corners near it as the crow flies: a draw over the whole city rarely lands in range)."""
+    graph = world.city(target.city)
+    end = world.node(target.node)
+    ids = [i for i in sorted(graph.ids) if haversine_m(end.lat, end.lng, world.node(i).lat, world.node(i).lng)
+           <= CUE_MAX_M and len(world.node(i).streets) >= 2]
+    rng.shuffle(ids)
+    out = []
+    for node_id in ids[:60]:
+        try:
+            route = world.directions(node_id, target.node)
+        except ValueError:
+            continue
+        if MIN_M <= route.distance_m <= CUE_MAX_M:
+            out.append((world.place(node_id), route))
+    return out
+
+
+def cue_task(world: Any, target: Any, rng: Any) -> tuple[str, str, Any, Any, int] | None:
+    """(cue key, cue value, start, route, range in m) for a hard task about ``target``, or None.
+
+    The fact alone does not single the landmark out (another landmark of the city shares it); the range
+    alone does not (another landmark with an article stands within it); together they do, with margins
+    (every other landmark sharing the fact is RANGE_MARGIN_M beyond the range)."""
+    peers = [p for p in landmarks_of(world) if p.city == target.city and p.id != target.id
+             and wiki.by_poi_id(p.id) is not None]
+    keys = [k for k in CUES if k in target.facts]
+    rng.shuffle(keys)
+    for key in keys:
+        value = _fact_text(key, target.facts[key])
+        sharing = [p for p in peers if key in p.facts and _fact_text(key, p.facts[key]) == value]
+        if not sharing or (key == "architect" and answer_check(key, value) is None):
+            continue
+        if not all(contains_phrase(article_text(wiki.by_poi_id(p.id)), value) for p in [target, *sharing]):
+            continue  # the wiki must state the fact of the landmark and of those sharing it
+        for start, route in near_starts(world, target, rng)[:30]:
+            limit = int(-(-(route.distance_m + 60) // 100) * 100)  # rounded up, 60 m clear of the walk
+
+            def walk_m(p: Any) -> float:
+                try:
+                    return float(world.directions(start.node, p.node).distance_m)
+                except ValueError:
+                    return float("inf")
+
+            if any(walk_m(p) <= limit + RANGE_MARGIN_M for p in sharing):
+                continue
+            if not any(walk_m(p) <= limit - 60 for p in peers):
+                continue  # the range alone would single it out
+            return key, value, start, route, limit
+    return None
+
+
 def landmark_task(world: Any, tid: str, target: Any, article: Any, question_key: str, start: Any, route: Any,
-                  trng: Any, hard: bool) -> Task:
-    """One task: walk to the landmark, look it up, answer. A hard task describes the landmark only by its
-    look (no address, no name), so the agent must match the description to what it sees on the street."""
+                  trng: Any, hard: bool, cue: tuple[str, str, int] | None = None) -> Task:
+    """One task: walk to the landmark, look it up, answer. A hard task with a ``cue`` (key, value, range)
+    names the landmark by a wiki fact plus a walking range from the corner, which single it out only
+    together; one without describes it only by its look (no address, no name)."""
     question, answer = QUESTIONS[question_key][0], QUESTIONS[question_key][1](target.facts[question_key])
     corner = start.name.replace(" & ", " and ")
-    if hard:
+    if cue is not None:
+        key, value, limit = cue
+        city = world.city(target.city).name.split(" (")[0]
+        intent = (f"You are at the corner of {corner} in {city}. Of the landmarks within about {limit} m of this "
+                  f"corner on foot, exactly one {CUES[key].format(v=value)}, as its wiki article gives "
+                  f"{CUE_LABEL[key]} (other landmarks of the city share that, farther away). Find it: the wiki's "
+                  "articles give each landmark's address, and the map measures walks. "
+                  f"{WALK_RULE} When you are there, look it up on the wiki and answer: {question} "
+                  + answer_rule(FORMS[question_key]))
+    elif hard:
         intent = (f"You are at the corner of {corner}. Within about {int(round(route.distance_m, -2)) or 100} m "
                   f"on foot stands a landmark you will know only by its look: {target.description_hint} "
                   "No address or name is given: find it by what you see in the street views. "
@@ -212,7 +286,8 @@ def landmark_task(world: Any, tid: str, target: Any, article: Any, question_key:
         oracle=oracle,
         metadata={"poi_id": target.id, "article": article.slug, "question": question_key,
                   "shortest_path_m": route.distance_m, "start_lat": world.node(start.node).lat,
-                  "start_lng": world.node(start.node).lng, "visual_only": hard},
+                  "start_lng": world.node(start.node).lng, "visual_only": hard and cue is None,
+                  "cue": {"key": cue[0], "value": cue[1], "range_m": cue[2]} if cue else None},
     )
 
 
@@ -257,7 +332,8 @@ def generate() -> list[Task]:
 
 
 def hard_tasks(world: Any) -> list[Task]:
-    """Landmarks described only by their look: one per landmark whose look no other landmark shares."""
+    """Hard by composition: a landmark named by a wiki fact it shares with others of its city and a walking
+    range that holds other landmarks (``cue_task``); the answer is another fact of its article."""
     tasks: list[Task] = []
     landmarks = landmarks_of(world)
     hints = [p.description_hint for p in landmarks]
@@ -273,9 +349,13 @@ def hard_tasks(world: Any) -> list[Task]:
         if not answerable:
             continue
         trng = rng_for("traveling", "hard", target.id)
-        found = start_place(world, target, trng, max_m=HARD_MAX_M)
+        found = cue_task(world, target, trng)
         if found is None:
             continue
+        key, value, start, route, limit = found
+        questions = [k for k in answerable if k != key]  # the answer is another fact than the cue
+        if not questions:
+            continue
         tasks.append(landmark_task(world, f"traveling-hard-{target.city}-{len(tasks):03d}", target, article,
-                                   trng.choice(answerable), *found, trng, hard=True))
+                                   trng.choice(questions), start, route, trng, hard=True, cue=(key, value, limit)))
     return tasks

@@ -1,0 +1,153 @@
+"""Hard by composition (issue 26, principle 6): a hard task passes only when every part is right together.
+
+Shopping (played through the real server, Chromium and street graph, graded from the run directory): the
+oracle of a budget task passes; ordering both items at the nearest store that has them (ignoring the budget)
+fails, and so does ordering at the right store but walking to that nearer one. Navigation (the same way):
+three stops in the wiki's order pass; the same walk in the order the intent lists them fails. Cooking (graded offline with
+the kitchen's own checks on real simulator outcomes): a recipe told apart only by a step passes with its own
+steps and fails with its look-alike's, and its intent names no missing food although two must be ordered.
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+
+import anyio
+import pytest
+
+from ewa_mcp.core.paths import tasks_dir
+from ewa_mcp.core.taskmodel import Task, TaskStore, ToolCall
+from ewa_mcp.envs.kitchen.taskgen.cooking import food_treatments, telling_step
+from ewa_mcp.envs.kitchen.taskgen.outcomes import grade_kitchen, recipe_outcome
+from ewa_mcp.envs.kitchen.taskgen.recipe_goals import recipe_ops
+from ewa_mcp.envs.street.world import get_world
+from ewa_mcp.evaluation.agents import OracleAgent
+from ewa_mcp.evaluation.runner import run_eval
+from ewa_mcp.graders import grade_run
+from ewa_mcp.websites.recipes.catalog import load_catalog
+from ewa_mcp.websites.shop import catalog as shop
+
+needs_browser = pytest.mark.skipif(
+    not (shutil.which("chromium") or shutil.which("chromium-browser")), reason="no Chromium: apt-get install chromium")
+
+
+@pytest.fixture(scope="module")
+def store() -> TaskStore:
+    return TaskStore([tasks_dir()])
+
+
+def budget_task(store: TaskStore) -> Task:
+    """The first hard shopping task of the "nearest store within the budget" form."""
+    return next(t for t in sorted(store.all("shopping"), key=lambda t: t.id)
+                if t.difficulty == "hard" and t.metadata["named_stores"] is None)
+
+
+def nearer_over_budget(task: Task) -> str:
+    """The nearest store that has both in stock: over the budget, by construction."""
+    meta, world = task.metadata, get_world()
+    both = [sid for sid in meta["totals"] if all(shop.stock(p, s, sid) > 0 for p, s in zip(meta["products"], meta["sizes"]))]
+    return min(both, key=lambda sid: world.directions(task.start.embodied.node, meta["store_nodes"][sid]).distance_m)
+
+
+def with_store(task: Task, order_at: str, walk_to: str) -> Task:
+    """The oracle's plan with the order placed at ``order_at`` and the walk ending at ``walk_to``."""
+    world, meta = get_world(), task.metadata
+    name = {s.id: s.name for s in shop.load_stores()}
+    calls: list[ToolCall] = []
+    for c in task.oracle:
+        if c.tool == "browser_type" and c.args.get("text") == name[meta["store_id"]]:
+            c = ToolCall(tool=c.tool, args={**c.args, "text": name[order_at]})
+        if c.tool in ("street_move", "street_stop", "finish_episode"):
+            continue
+        calls.append(c)
+    route = world.directions(task.start.embodied.node, meta["store_nodes"][walk_to])
+    calls += [ToolCall(tool="street_move", args={"neighbour": n}) for n in route.nodes[1:]]
+    calls += [ToolCall(tool="street_stop", args={}), ToolCall(tool="finish_episode", args={})]
+    return task.model_copy(update={"oracle": calls})
+
+
+def play(task: Task, tmp_path, name: str) -> bool:
+    folder = tmp_path / name / "tasks" / task.domain
+    folder.mkdir(parents=True)
+    (folder / "t.json").write_text(json.dumps([task.model_dump(mode="json")]), "utf-8")
+    run = tmp_path / name / "run"
+    anyio.run(lambda: run_eval([task], OracleAgent(), run_dir=run, task_dirs=[folder.parent], workers=1,
+                               progress=False))
+    (episode,) = grade_run(run).episodes
+    return episode.overall_success
+
+
+@needs_browser
+def test_budget_task_needs_budget_store_and_walk_together(store, tmp_path):
+    task = budget_task(store)
+    answer, wrong = task.metadata["store_id"], nearer_over_budget(task)
+    assert wrong != answer
+    assert play(task, tmp_path, "oracle")
+    assert not play(with_store(task, wrong, wrong), tmp_path, "ignore-budget")
+    assert not play(with_store(task, answer, wrong), tmp_path, "wrong-walk")
+
+
+def step_told_tasks(store: TaskStore) -> list[Task]:
+    return [t for t in sorted(store.all("cooking"), key=lambda t: t.id) if t.metadata.get("telling_step")]
+
+
+def test_step_told_recipes_have_no_filter_in_the_intent_and_name_no_missing_food(store):
+    tasks = step_told_tasks(store)
+    assert len(tasks) >= 20
+    recipes = load_catalog()
+    for task in tasks:
+        recipe = recipes.by_id[task.metadata["recipe_id"]]
+        assert task.difficulty == "hard" and task.metadata["constraint"] is None, task.id
+        assert f"follow the one that {telling_step(recipe, recipes)}." in task.intent, task.id
+        for label in ("Diet type", "Difficulty level", "Use equipment", "Include ingredient", "Exclude ingredient"):
+            assert label not in task.intent, task.id
+        assert len(task.metadata["buy"]) == 2 and len(task.web_goals) == 3, task.id
+        assert "Your kitchen has no" not in task.intent and "find out which" in task.intent, task.id
+        # the search oracle uses no filter: only the steps tell the look-alikes apart
+        assert "diet=" not in task.oracle[0].args["url"] and "equipment=" not in task.oracle[0].args["url"]
+
+
+def test_the_telling_step_is_true_of_the_recipe_and_false_of_every_look_alike(store):
+    recipes = load_catalog()
+    for task in step_told_tasks(store):
+        recipe = recipes.by_id[task.metadata["recipe_id"]]
+        rivals = [r for r in recipes.recipes if r["name"] == recipe["name"] and r["id"] != recipe["id"]]
+        food = next(f for f in food_treatments(recipe_ops(recipe)) if f" the {f.lower()}" in task.metadata["telling_step"])
+        mine = food_treatments(recipe_ops(recipe))[food]
+        assert all(food_treatments(recipe_ops(r))[food] != mine for r in rivals), task.id
+
+
+def test_a_step_told_task_passes_its_own_steps_and_fails_its_look_alikes(store):
+    recipes = load_catalog()
+    checked = 0
+    for task in step_told_tasks(store)[:8]:
+        recipe = recipes.by_id[task.metadata["recipe_id"]]
+        scene, bought = task.start.embodied.scene, list(task.metadata["buy"])
+        own = recipe_outcome(scene, recipe_ops(recipe), bought)
+        assert own is not None and all(r.met for r in grade_kitchen(task.embodied_goals, own)), task.id
+        for rival in (r for r in recipes.recipes if r["name"] == recipe["name"] and r["id"] != recipe["id"]):
+            state = recipe_outcome(scene, recipe_ops(rival), bought)
+            if state is not None:
+                checked += 1
+                assert not all(r.met for r in grade_kitchen(task.embodied_goals, state)), (task.id, rival["id"])
+        # the other half, the orders: cooking without the missing foods cannot even be done in this kitchen
+        assert recipe_outcome(scene, recipe_ops(recipe), []) is None, task.id
+    assert checked >= 4
+
+
+@needs_browser
+def test_stops_in_the_intents_order_fail_and_in_the_wikis_order_pass(store, tmp_path):
+    world = get_world()
+    task = next(t for t in sorted(store.all("navigation"), key=lambda t: t.id) if t.difficulty == "hard")
+    meta = task.metadata
+    assert play(task, tmp_path, "oracle-stops")
+    origin = world.places.get(meta["origin_id"]) or world.place(meta["origin_id"])
+    stops = [origin, *(world.places[p] for p in meta["listed"])]
+    nodes = [origin.node]
+    for a, b in zip(stops, stops[1:]):
+        nodes += world.directions(a.id, b.id).nodes[1:]
+    walk = [c for c in task.oracle if c.tool not in ("street_move", "street_stop", "finish_episode")]
+    walk += [ToolCall(tool="street_move", args={"neighbour": n}) for n in nodes[1:]]
+    walk += [ToolCall(tool="street_stop", args={}), ToolCall(tool="finish_episode", args={})]
+    assert not play(task.model_copy(update={"oracle": walk}), tmp_path, "listed-order")
