@@ -10,7 +10,6 @@ import signal
 import subprocess
 import sys
 import time
-from pathlib import Path
 
 import pytest
 
@@ -23,7 +22,6 @@ pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="th
 # land on the other thread, where Python runs no handler.
 WORKER = r"""
 import os, signal, subprocess, sys, threading, time
-from pathlib import Path
 from ewa_mcp.evaluation.lifeline import bind_to_parent
 
 staging = Path(sys.argv[1])
