@@ -1,11 +1,11 @@
 """What an agent reads, in characters and tokens: the oracle replayed over a sample of every domain through bound
 episodes (ewa_mcp/bound.py, the tools and results an MCP agent gets), in-process.
 
-    .venv/bin/python benchmarks/bench_tokens.py [--sample 3] [--options '{"web_incremental": true}']
+    .venv/bin/python benchmarks/bench_tokens.py [--sample 3] [--options '{"web_incremental": false}']
                                                 [--descriptions full]
 
-``--descriptions full --options '{"structured": "full"}'`` is what a bound agent read before issue 29 (the
-"before" figures of docs/performance.md).
+``--descriptions full --options '{"structured": "full", "web_incremental": false}'`` is what a bound agent read
+before issue 29 (the "before" figures of docs/performance.md).
 
 Prints JSON, per domain: the tool definitions the episode's agent sees (name, description and input schema, as a
 client sends them to a model), each observation kind (the result of each tool, ``start`` being the episode's first
@@ -159,7 +159,7 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
 def main() -> None:
     p = argparse.ArgumentParser()
     p.add_argument("--sample", type=int, default=3, help="tasks per domain")
-    p.add_argument("--options", default=None, help="start_episode options as JSON, e.g. '{\"web_incremental\": true}'")
+    p.add_argument("--options", default=None, help="start_episode options as JSON, e.g. '{\"web_incremental\": false}'")
     p.add_argument("--descriptions", choices=["concise", "full"], default="concise",
                    help="the bound server's tool descriptions")
     args = p.parse_args()

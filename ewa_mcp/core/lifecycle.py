@@ -14,7 +14,8 @@ from . import registry
 from .environment import Observation
 from .episodes import EpisodeError, EpisodeManager
 from .options import EpisodeOptions
-from .response import IMAGE_NAME, StepOutput, footer, image_links, observation_data, step_result, tool_result
+from .response import (IMAGE_NAME, StepOutput, compact_requested, footer, image_links, observation_data, step_result,
+                       tool_result)
 from .tool_table import EpisodeId, define_tool
 
 DomainName = str  # replaced by a Literal of the registry's domain names in register()
@@ -128,6 +129,32 @@ def client_key(ctx: Context | None) -> str | None:
     return state.get("connection") if isinstance(state, dict) else None
 
 
+def status_text(summary: dict[str, Any], status_words: dict[str, tuple[str, str]]) -> str:
+    """Every fact of an episode's summary in words (what was asked, how it stands or ended, the answer, the
+    steps, the environments' status fields), so a model that reads only the text misses nothing the structured
+    content holds."""
+    environments = ", ".join(f"{side} {name}" for side, name in summary["environments"].items())
+    words = "".join(f"; {status_words[k][0] if v else status_words[k][1]}" for k, v in summary.items()
+                    if k in status_words and v is not None)
+    # Quoted as JSON quotes it, so an answer costs the text what it costs the structured content.
+    answer = "none given" if summary["answer"] is None else json.dumps(summary["answer"], ensure_ascii=False)
+    return (f"Task: {summary['task_id']} (domain {summary['domain']}). Outcome: status {summary['status']}, end "
+            f"reason: {summary['end_reason'] or 'none'}. Answer: {answer}. Steps used: {summary['steps']} of the "
+            f"{summary['step_limit']} allowed ({summary['steps_left']} left); environment switches: "
+            f"{summary['switches']}. Environments: {environments} (active: {summary['active_environment']}){words}.")
+
+
+def server_text(limits: dict[str, Any]) -> str:
+    """The server's admission rules (EpisodeManager.limits) in words."""
+    return (f"Server: {limits['open_episodes']} open episodes"
+            + (f" of at most {limits['max_episodes']}" if limits["max_episodes"] else " (no cap)")
+            + (f", at most {limits['max_episodes_per_client']} per client" if limits["max_episodes_per_client"]
+               else ", no cap per client")
+            + (f"; an episode with no call for {limits['idle_timeout_s']:g} s is ended (aborted); "
+               f"{limits['reaped_idle']} ended so far for idling" if limits["idle_timeout_s"]
+               else "; idle episodes are not ended"))
+
+
 def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
     Status = status_model()
     finish_hints = "".join(f" {e.finish_hint}" for e in registry.ordered_environments() if e.finish_hint)
@@ -210,7 +237,10 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
         episode_id: EpisodeId, answer: Annotated[str | None, Field(max_length=4000)] = None
     ) -> CallToolResult:
         episode = await episodes.finish(episode_id, answer)
-        return tool_result(Status(**episode.summary()), f"Episode {episode.id} finished. {footer(episode)}")
+        summary = episode.summary()
+        return tool_result(Status(**summary),
+                           f"Episode {episode.id} finished. {status_text(summary, status_words)} {footer(episode)}",
+                           compact=compact_requested(episode))
 
     # The output schema carries the status fields the environments declare (status_model), so the return
     # annotation is set here, where that model exists.
@@ -230,18 +260,8 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
             episode, _ = await episodes.act(episode_id, "episode_status", {}, note, environment=None)
         s = episode.summary()
         limits = episodes.limits()
-        text = (
-            f"{episode.id}: task {episode.task.id} ({episode.task.domain}), {episode.status}"
-            + (f" ({episode.end_reason})" if episode.end_reason else "")
-            + f"; active {episode.active}; steps {episode.steps}/{episode.task.step_limit}; switches {episode.switches}"
-            + "".join(f"; {status_words[k][0] if v else status_words[k][1]}" for k, v in s.items()
-                      if k in status_words and v is not None)
-            + f"\nServer: {limits['open_episodes']} open episodes"
-            + (f" of at most {limits['max_episodes']}" if limits["max_episodes"] else "")
-            + (f"; an episode with no call for {limits['idle_timeout_s']:g} s is ended (aborted)"
-               if limits["idle_timeout_s"] else "")
-        )
-        return tool_result(Status(**s, server=limits), text)
+        text = f"{episode.id}: {status_text(s, status_words)}\n{server_text(limits)}"
+        return tool_result(Status(**s, server=limits), text, compact=compact_requested(episode))
 
     episode_status.__annotations__["return"] = Annotated[CallToolResult, Status]
     define_tool(mcp, title="Episode status", effect="look", description=(

@@ -32,5 +32,6 @@ class EpisodeOptions(BaseModel):
         None, description="structured content of observations: full (the observation's data; the default) or "
                           "compact (status and step counts only; the text carries the observation)")
     web_incremental: bool | None = Field(
-        None, description="web observations after the first on a page send only the lines that changed "
-                          "(default false: the whole page every time)")
+        None, description="web observations after an action send only the lines of the page that changed since "
+                          "the agent last read it (default true; false: the whole page every time; "
+                          "browser_snapshot and get_observation always send the whole page)")

@@ -34,10 +34,28 @@ def image_uri(episode_id: str, step: int, k: int) -> str:
 IMAGE_NAME = re.compile(r"^(\d{1,9})-(\d{1,4})\.png$")
 
 
+def compact_requested(episode: Any) -> bool:
+    """Whether the episode asked for compact structured content (episode option ``structured: compact``, the
+    agent plane's default): no more in the structured content than its text says."""
+    return (getattr(episode, "options", None) or {}).get("structured") == "compact"
+
+
+def without_nulls(value: Any) -> Any:
+    """``value`` (JSON data) without the null members of its objects, at any depth."""
+    if isinstance(value, dict):
+        return {k: without_nulls(v) for k, v in value.items() if v is not None}
+    if isinstance(value, list):
+        return [without_nulls(v) for v in value]
+    return value
+
+
 def tool_result(model: BaseModel, text: str, images: Sequence[bytes] = (),
-                image_links: Sequence[str] = ()) -> CallToolResult:
+                image_links: Sequence[str] = (), compact: bool = False) -> CallToolResult:
     """``image_links``, one per image, adds a resource_link after each inline image: many clients drop
-    or delay images returned inline by a tool, and can still fetch them by address."""
+    or delay images returned inline by a tool, and can still fetch them by address.
+
+    ``compact``: the structured content leaves out the null fields the output schema does not require (a
+    status field of an environment the episode does not have says nothing the text has to repeat)."""
     content: list[Any] = [TextContent(type="text", text=text)]
     for i, png in enumerate(images):
         content.append(ImageContent(type="image", data=base64.b64encode(png).decode("ascii"), mime_type="image/png"))
@@ -46,7 +64,11 @@ def tool_result(model: BaseModel, text: str, images: Sequence[bytes] = (),
             content.append(ResourceLink(type="resource_link", uri=uri, name=uri.rsplit("/", 1)[-1],
                                         title=f"observation image {i + 1} of {len(images)}",
                                         mime_type="image/png", size=len(png)))
-    return CallToolResult(content=content, structured_content=model.model_dump(mode="json"))
+    structured = model.model_dump(mode="json")
+    if compact:
+        required = {name for name, f in type(model).model_fields.items() if f.is_required()}
+        structured = {k: without_nulls(v) for k, v in structured.items() if v is not None or k in required}
+    return CallToolResult(content=content, structured_content=structured)
 
 
 def image_links(episode: Any, images: Sequence[bytes]) -> list[str]:
@@ -65,7 +87,7 @@ def footer(episode: Any) -> str:
 def observation_data(episode: Any, observation: Observation) -> dict[str, Any]:
     """The observation as structured content: all its data, or with the episode option ``structured: compact``
     only its kind (the text already carries the observation; a model that reads both pays for it twice)."""
-    if (getattr(episode, "options", None) or {}).get("structured") == "compact":
+    if compact_requested(episode):
         return {"kind": observation.data["kind"]} if "kind" in observation.data else {}
     return observation.data
 

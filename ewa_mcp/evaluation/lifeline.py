@@ -11,7 +11,14 @@ on, and the staging folder with them. So each worker:
   its node driver) is re-parented to the worker, not to init, and is still found among its descendants;
 * on SIGTERM, SIGHUP or SIGINT kills every descendant (SIGKILL, until none is left) and exits at once (no
   interpreter shutdown that could wait on a stuck episode thread); a helper forked at that moment deletes its
-  staging folder, and the run's ``.staging`` folder once it is empty, as soon as the worker is gone.
+  staging folder, and the run's ``.staging`` folder once it is empty, as soon as the worker is gone;
+* does that from a watchdog thread, never from a Python signal handler. Python runs handlers in the main thread
+  alone, and only once it executes bytecode again; the kernel may hand the signal to any thread, and a main
+  thread blocked in a semaphore wait (the worker waiting on its task queue) is then never interrupted, so a
+  handler never ran and the worker outlived its driver (with it, multiprocessing's resource tracker, which waits
+  for every holder of its pipe). The watchdog reads the signal numbers the C-level handler writes to the wakeup
+  fd, whichever thread received them, and also sees the parent go by polling ``getppid``. It is the only path
+  that ends the worker: a second signal arriving while a handler was ending it (inside its fork) deadlocked.
 
 Elsewhere than Linux the worker keeps the default handlers (the driver's own cleanup still runs on SIGTERM).
 """
@@ -21,8 +28,10 @@ from __future__ import annotations
 import ctypes
 import os
 import shutil
+import select
 import signal
 import sys
+import threading
 import time
 from pathlib import Path
 from typing import Any
@@ -116,11 +125,12 @@ def remove_staging(staging: Path) -> None:
 
 
 def bind_to_parent(staging: Path, parent_pid: int) -> None:
-    """Make this worker die with its parent and leave nothing behind (see the module docstring)."""
+    """Make this worker die with its parent and leave nothing behind (see the module docstring). Called from
+    the worker's main thread, before it starts any other thread."""
     if not sys.platform.startswith("linux"):
         return
 
-    def die(signum: int, _frame: Any) -> None:
+    def die(signum: int) -> None:
         # The episodes under way fail as their browser goes: their tracebacks would bury the driver's one line.
         try:
             os.dup2(os.open(os.devnull, os.O_WRONLY), 2)
@@ -145,9 +155,40 @@ def bind_to_parent(staging: Path, parent_pid: int) -> None:
             remove_staging(staging)
         os._exit(128 + signum)
 
-    for sig in (signal.SIGTERM, signal.SIGHUP, signal.SIGINT):
-        signal.signal(sig, die)
+    # The watchdog alone ends the worker, once: the Python-level handlers only keep these signals from killing
+    # the process outright (their C-level half writes the signal's number to the wakeup fd, from whichever thread
+    # the kernel chose). Ending the worker from a handler too raced with the watchdog, and a second signal ran
+    # the handler again inside the first one's fork.
+    wake_r, wake_w = os.pipe()
+    os.set_blocking(wake_w, False)
+    signal.set_wakeup_fd(wake_w, warn_on_full_buffer=False)
+    for sig in WATCHED:
+        signal.signal(sig, _noted)
     _prctl(PR_SET_CHILD_SUBREAPER, 1)
     _prctl(PR_SET_PDEATHSIG, int(signal.SIGTERM))
-    if os.getppid() != parent_pid:  # the parent died before the death signal was asked for
-        die(int(signal.SIGTERM), None)
+    # Its first look at the parent also catches a parent that died before the death signal was asked for.
+    threading.Thread(target=_watch, args=(wake_r, parent_pid, die), name="ewa-lifeline", daemon=True).start()
+
+
+WATCHED = (signal.SIGTERM, signal.SIGHUP, signal.SIGINT)
+
+
+def _noted(_signum: int, _frame: Any) -> None:
+    """The Python-level handler of the watched signals: nothing to do, the watchdog thread acts on them."""
+
+
+def _watch(wake_fd: int, parent_pid: int, die: Any, interval: float = 0.1) -> None:
+    """The watchdog thread: ends the worker on a watched signal (its number read from the wakeup fd) or when
+    the parent is gone, whatever the main thread is blocked in."""
+    watched = {int(s) for s in WATCHED}
+    while True:
+        if os.getppid() != parent_pid:
+            die(int(signal.SIGTERM))
+        try:
+            ready, _, _ = select.select([wake_fd], [], [], interval)
+            received = os.read(wake_fd, 64) if ready else b""
+        except OSError:
+            received = b""
+        for signum in received:
+            if signum in watched:
+                die(signum)

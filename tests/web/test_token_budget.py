@@ -44,7 +44,7 @@ async def test_a_bound_cooking_agent_sees_its_tools_in_at_most_1500_tokens(tmp_p
         await episodes.services.aclose()
 
 
-async def test_incremental_web_observations_send_what_changed_and_snapshots_send_the_page(tmp_path, chromium_path):
+async def test_web_observations_send_what_changed_by_default_and_snapshots_send_the_page(tmp_path, chromium_path):
     full, episodes = build_server(ServerConfig(run_dir=tmp_path))
     try:
         async def next_step(options: dict) -> tuple[dict, str, str]:
@@ -55,7 +55,7 @@ async def test_incremental_web_observations_send_what_changed_and_snapshots_send
             snapshot = await full.call_tool("browser_snapshot", {"episode_id": eid})
             return clicked.structured_content["observation"], _text(clicked), _text(snapshot)
 
-        data, text, snapshot = await next_step({"web_incremental": True, "structured": "full"})
+        data, text, snapshot = await next_step({"structured": "full"})  # the default: only what changed
         assert data["incremental"] is True and "?step=2" in data["url"]
         assert "changes since your last observation" in text
         added = [line[2:] for line in text.splitlines() if line.startswith("+ ")]
@@ -64,7 +64,8 @@ async def test_incremental_web_observations_send_what_changed_and_snapshots_send
         # browser_snapshot reads the whole page again, whatever the option.
         assert "Accessibility tree (whole page)" in snapshot and data["tree"] in snapshot
 
-        plain, plain_text, _ = await next_step({"structured": "full"})  # the default: the whole page every time
+        # The option that asks for the whole page after every action.
+        plain, plain_text, _ = await next_step({"web_incremental": False, "structured": "full"})
         assert plain["incremental"] is False and plain["tree"] in plain_text
     finally:
         await episodes.aclose()

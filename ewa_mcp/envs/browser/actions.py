@@ -31,7 +31,8 @@ Url = Annotated[
 ]
 # What every action returns, by the episode's observation mode (the start_episode option).
 OBSERVES = (" Returns the page afterwards as the episode's observation mode shows it: text mode the accessibility "
-            "tree; vision mode a Set-of-Marks screenshot plus the list of its marked elements; both mode the tree "
+            "tree (only the lines that changed, when you read the page before; browser_snapshot shows it whole); "
+            "vision mode a Set-of-Marks screenshot plus the list of its marked elements; both mode the tree "
             "and the screenshot.")
 
 

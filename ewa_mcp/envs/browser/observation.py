@@ -186,7 +186,9 @@ async def present(session: BrowserSession, tab: Tab, collected: tuple[list[Any],
     body = body or ("marks" if session.mode() == "vision" else "tree")
     tree_lines = rendered.text.splitlines() if body == "tree" else None
     changes = None
-    if incremental and tree_lines is not None and session.options.get("web_incremental"):
+    # On by default: a page after an action does not resend what the agent has already read of it; the option
+    # web_incremental false asks for the whole page every time (browser_snapshot and get_observation always are).
+    if incremental and tree_lines is not None and session.options.get("web_incremental", True):
         changes = tree_changes(session.seen_tree, tree_lines)
     session.seen_tree = tree_lines  # what the agent now knows of the page (a marks list shows no tree)
     return build_observation(tabs=lines, facts=facts, url=tab.page.url, site_url=session.site_url(tab.page.url),

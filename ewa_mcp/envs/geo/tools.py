@@ -12,7 +12,7 @@ from mcp_types import CallToolResult
 from pydantic import BaseModel, Field
 
 from ewa_mcp.core.episodes import EpisodeManager
-from ewa_mcp.core.response import footer, tool_result
+from ewa_mcp.core.response import compact_requested, footer, tool_result
 from ewa_mcp.core.tool_table import EpisodeId, define_tool, register_actions
 
 from .actions import ACTIONS
@@ -80,4 +80,8 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
                                         args=args, requires="geo", check=check)
         out = SubmissionOutput(episode_id=episode.id, status=episode.status, end_reason=episode.end_reason,
                                steps=episode.steps, submission=submission)
-        return tool_result(out, f"Location submitted: {answer}. {footer(episode)}")
+        # The text says what the structured content holds: the submission, how the episode ended, the steps.
+        text = (f"Location submitted: {answer} (latitude, longitude — continent, country, city, street). Episode "
+                f"status {episode.status}" + (f" ({episode.end_reason})" if episode.end_reason else "")
+                + f" after {episode.steps} steps. {footer(episode)}")
+        return tool_result(out, text, compact=compact_requested(episode))
