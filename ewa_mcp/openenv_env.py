@@ -50,7 +50,7 @@ from pydantic import Field
 
 from . import __version__
 from .core.taskmodel import Task
-from .gym import SUITE, EwaEnv, RewardMode, _release, _Runtime
+from .gym import SUITE, EwaEnv, RewardMode, ToolCallSpace, _release, _Runtime
 
 # EwaEnv construction and close change the shared server's user count; sessions are created and closed in
 # different executor threads.
@@ -99,13 +99,15 @@ class EwaOpenEnv(Environment[EwaAction, EwaObservation, EwaState]):
             self._env = EwaEnv(domain, tasks=tasks, extra_tasks=extra_tasks, reward=reward, observation=observation,
                                episode_options=episode_options, task_dirs=task_dirs, run_dir=run_dir,
                                settings=settings, _runtime=_runtime)
+        assert isinstance(self._env.action_space, ToolCallSpace)
+        self._space: ToolCallSpace = self._env.action_space
         self._state = EwaState(domain=None if domain == SUITE else domain)
         self._closed = False
 
     @property
     def tools(self) -> list[str]:
         """The tools an agent of this environment may call (the bound plane's: no control tools)."""
-        return sorted(self._env.action_space.tools)
+        return sorted(self._space.tools)
 
     @property
     def task_ids(self) -> list[str]:
@@ -118,12 +120,10 @@ class EwaOpenEnv(Environment[EwaAction, EwaObservation, EwaState]):
             raise ValueError(f"unknown reset parameter(s) {sorted(kwargs)}; reset takes seed, episode_id and task_id")
         options = {"task_id": task_id} if task_id is not None else None
         text, info = self._env.reset(seed=seed, options=options)
-        episode = self._env.episode
         self._state = EwaState(episode_id=episode_id or self._env.episode_id, step_count=0, task_id=info["task_id"],
                                domain=info["domain"], status=info["status"], completion=info["completion"],
                                record_id=self._env.episode_id)
-        assert episode is not None
-        tools = sorted(set(self.tools) & set(self._episode_tools()))
+        tools = self._episode_tools()
         return EwaObservation(text=text, images=_encode(info.pop("images", [])), tools=tools, done=False,
                               reward=0.0, metadata=info)
 
@@ -162,7 +162,7 @@ class EwaOpenEnv(Environment[EwaAction, EwaObservation, EwaState]):
         """The tools of the environments the running episode has (a geolocation episode lists no kitchen tools)."""
         bound = self._env.bound
         assert bound is not None
-        return [name for name in self._env.action_space.tools if not bound._foreign(name)]
+        return sorted(name for name in self._space.tools if not bound._foreign(name))
 
 
 def _encode(images: list[bytes]) -> list[str]:
@@ -185,7 +185,8 @@ def create_ewa_app(domain: str = SUITE, *, max_concurrent_envs: int = 8, tasks: 
     try:
         for task in extra_tasks or ():
             runtime.episodes.tasks.add(task)
-        kwargs = dict(tasks=tasks, reward=reward, observation=observation, episode_options=episode_options)
+        kwargs: dict[str, Any] = dict(tasks=tasks, reward=reward, observation=observation,
+                                      episode_options=episode_options)
         EwaOpenEnv(domain, **kwargs, _runtime=runtime).close()  # bad arguments fail here, not in each session
     except BaseException:
         with _USERS_LOCK:
