@@ -3,7 +3,7 @@
     from ewa_mcp.openenv_env import EwaAction, create_ewa_app
     app = create_ewa_app("navigation", max_concurrent_envs=16)     # uvicorn.run(app, host="127.0.0.1", port=8000)
 
-A client opens a session on the app's ``/ws`` WebSocket (openenv's ``EnvClient`` does) and sends
+A client opens a session on the app's ``/ws`` WebSocket (``EwaEnvClient`` below, openenv's ``EnvClient``) and sends
 ``{"type": "reset", "data": {"seed": 0, "task_id": "navigation-boston-000"}}``, then
 ``{"type": "step", "data": {"tool": "street_observe", "arguments": {}}}`` until the observation says ``done``.
 
@@ -40,6 +40,8 @@ from pathlib import Path
 from typing import Any, Literal
 
 try:
+    from openenv.core.client_types import StepResult
+    from openenv.core.env_client import EnvClient
     from openenv.core.env_server import Environment, create_fastapi_app
     from openenv.core.env_server.types import Action, EnvironmentMetadata, Observation, State
 except ImportError as exc:  # an optional extra
@@ -204,3 +206,24 @@ def create_ewa_app(domain: str = SUITE, *, max_concurrent_envs: int = 8, tasks: 
     app.router.on_shutdown.append(shutdown)
     app.state.ewa_runtime = runtime
     return app
+
+
+class EwaEnvClient(EnvClient[EwaAction, EwaObservation, EwaState]):
+    """openenv's WebSocket client for an app of ``create_ewa_app``, with ewa-mcp's types:
+
+        async with EwaEnvClient("http://127.0.0.1:8000") as client:
+            result = await client.reset(task_id="geo-0001-baseline")
+            result = await client.step(EwaAction(tool="geo_look"))    # result.observation.text, .reward, .done
+            state = await client.state()                              # state.grade once the episode ended
+    """
+
+    def _step_payload(self, action: EwaAction) -> dict[str, Any]:
+        return action.model_dump(exclude={"metadata"})
+
+    def _parse_result(self, payload: dict[str, Any]) -> StepResult[EwaObservation]:
+        reward, done = payload.get("reward"), bool(payload.get("done", False))
+        observation = EwaObservation(**payload.get("observation", {}), reward=reward, done=done)
+        return StepResult(observation=observation, reward=reward, done=done)
+
+    def _parse_state(self, payload: dict[str, Any]) -> EwaState:
+        return EwaState(**payload)

@@ -3,14 +3,17 @@ agent's action space has no control tools, and two concurrent sessions on the se
 
 from __future__ import annotations
 
+import asyncio
 import json
+import socket
 import threading
+import time
 
 import pytest
 
 from ewa_mcp.core.paths import task_dirs
 from ewa_mcp.core.taskmodel import TaskStore
-from ewa_mcp.openenv_env import EwaAction, EwaOpenEnv, create_ewa_app
+from ewa_mcp.openenv_env import EwaAction, EwaEnvClient, EwaOpenEnv, create_ewa_app
 
 from .helpers import ONE_PER_DOMAIN, embodied_only
 
@@ -159,3 +162,66 @@ def test_two_concurrent_sessions_on_the_app_do_not_cross_talk(walk_task, oracles
     assert walk["state"]["record_id"] != geo["state"]["record_id"]
     assert "Where in the world" in geo["first"] and "Where in the world" not in walk["first"]
     assert runtime.closed  # the app's shutdown stops its ewa-mcp server
+
+
+async def _client_session(url, task_id, steps, turn):
+    """One session through openenv's own WebSocket client over real HTTP; ``turn`` makes the sessions alternate."""
+    async with EwaEnvClient(url) as client:
+        first = await client.reset(task_id=task_id)
+        rewards = []
+        for tool, arguments in steps:
+            await turn(task_id)
+            result = await client.step(EwaAction(tool=tool, arguments=arguments))
+            rewards.append(result.reward)
+            if result.done:
+                break
+        return first.observation, rewards, result.done, await client.state()
+
+
+def test_openenv_client_sessions_over_loopback_http(walk_task, oracles, tmp_path):
+    import uvicorn
+
+    app = create_ewa_app("suite", max_concurrent_envs=2, extra_tasks=[walk_task], run_dir=tmp_path)
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    server = uvicorn.Server(uvicorn.Config(app, host="127.0.0.1", port=port, log_level="warning"))
+    thread = threading.Thread(target=server.run, daemon=True)
+    thread.start()
+    try:
+        while not server.started:
+            time.sleep(0.01)
+        plans = {WALK: oracles[WALK], GEO: oracles[GEO]}
+
+        async def both():
+            order = asyncio.Condition()
+            last = {"task": GEO}
+
+            async def turn(task_id):  # strict alternation while both run, so their steps interleave
+                async with order:
+                    await asyncio.wait_for(order.wait_for(lambda: last["task"] != task_id or last.get("alone")), 60)
+                    last["task"] = task_id
+                    order.notify_all()
+
+            async def run(task_id):
+                try:
+                    return await _client_session(f"http://127.0.0.1:{port}", task_id, plans[task_id], turn)
+                finally:
+                    async with order:
+                        last["alone"] = True
+                        order.notify_all()
+
+            return await asyncio.gather(run(WALK), run(GEO))
+
+        (walk_first, walk_rewards, walk_done, walk_state), (geo_first, geo_rewards, geo_done, geo_state) = (
+            asyncio.run(both()))
+    finally:
+        server.should_exit = True
+        thread.join(timeout=30)
+    assert sum(walk_rewards) == 1.0 and walk_done and sum(geo_rewards) == 1.0 and geo_done
+    assert walk_state.task_id == WALK and walk_state.step_count == len(plans[WALK])
+    assert geo_state.task_id == GEO and geo_state.step_count == len(plans[GEO])
+    assert walk_state.grade["overall_success"] and geo_state.grade["overall_success"]
+    assert "street_move" in walk_first.tools and "geo_look" in geo_first.tools
+    assert "geo_look" not in walk_first.tools and "street_move" not in geo_first.tools
+    assert app.state.ewa_runtime.closed
