@@ -8,8 +8,9 @@ STAMP := $(VENV)/.ewa-installed
 
 LOCK := requirements.lock
 # Installed without their dependencies (their versions are in the lock): openenv-core 0.3 requires Gradio for an
-# optional web UI, and Gradio requires pillow<13; the `openenv` extra lists what its server does import.
-NODEPS := openenv-core
+# optional web UI, and Gradio requires pillow<13; verifiers 0.4 pins mcp==2.0.0 and openai<3. The `openenv` and
+# `verifiers` extras (both in `test`) list the dependencies they do need.
+NODEPS := openenv-core verifiers
 
 .PHONY: run test lint install lock chromium egl bench clean
 
