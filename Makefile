@@ -7,6 +7,10 @@ BIN := $(VENV)/bin
 STAMP := $(VENV)/.ewa-installed
 
 LOCK := requirements.lock
+# Installed without their dependencies (their versions are in the lock): openenv-core 0.3 requires Gradio for an
+# optional web UI, and Gradio requires pillow<13; verifiers 0.4 pins mcp==2.0.0 and openai<3. The `openenv` and
+# `verifiers` extras (both in `test`) list the dependencies they do need.
+NODEPS := openenv-core verifiers
 
 .PHONY: run test lint install lock chromium egl bench clean
 
@@ -37,6 +41,7 @@ $(BIN)/python:
 # pyproject.toml declares compatible ranges; requirements.lock holds the exact versions installed here and in CI.
 $(STAMP): pyproject.toml $(LOCK) | $(BIN)/python
 	$(BIN)/python -m pip install -q --disable-pip-version-check -c $(LOCK) -e ".[test,ai2thor]"
+	$(BIN)/python -m pip install -q --disable-pip-version-check --no-deps -c $(LOCK) $(NODEPS)
 	touch $(STAMP)
 
 # Re-resolve the newest versions the ranges allow, in a fresh environment, and write them to requirements.lock.
@@ -45,6 +50,7 @@ lock:
 	rm -rf .venv-lock
 	$(PYTHON) -m venv .venv-lock
 	.venv-lock/bin/python -m pip install -q --disable-pip-version-check -e ".[test,ai2thor]"
+	.venv-lock/bin/python -m pip install -q --disable-pip-version-check --no-deps $(NODEPS)
 	( echo "# Exact versions for \`make install\` and CI: pip install -c requirements.lock -e '.[test,ai2thor]'"; \
 	  echo "# Written by \`make lock\` from the ranges in pyproject.toml; do not edit by hand."; \
 	  .venv-lock/bin/python -m pip freeze --disable-pip-version-check --exclude-editable ) > $(LOCK)

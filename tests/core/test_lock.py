@@ -41,3 +41,15 @@ def test_dependencies_are_ranges_not_pins():
     project = tomllib.loads((REPO_ROOT / "pyproject.toml").read_text(encoding="utf-8"))["project"]
     pinned = [r for r in project["dependencies"] if "==" in r]
     assert not pinned, f"pin exact versions in requirements.lock, not pyproject.toml: {pinned}"
+
+
+def test_packages_installed_without_dependencies_are_locked():
+    """The Makefile installs some packages with --no-deps (their declared dependencies conflict with ours); the
+    lock still pins them, or `make install` would take whatever version is newest."""
+    makefile = (REPO_ROOT / "Makefile").read_text(encoding="utf-8")
+    line = next(line for line in makefile.splitlines() if line.startswith("NODEPS :="))
+    names = line.partition(":=")[2].split()
+    assert names, "NODEPS is empty in the Makefile"
+    pins = _lock()
+    missing = [name for name in names if canonicalize_name(name) not in pins]
+    assert not missing, f"{missing} installed with --no-deps but not in requirements.lock; add NAME==VERSION there"
