@@ -3,6 +3,7 @@ added through the action table only, both exercised end to end through a real MC
 
 from __future__ import annotations
 
+import dataclasses
 import json
 
 import pytest
@@ -14,7 +15,7 @@ from ewa_mcp.envs.kitchen.actions import TABLE, KitchenAction
 from ewa_mcp.envs.kitchen.commands import parse_command
 from ewa_mcp.server import ServerConfig, build_server
 from ewa_mcp.taskgen import generate_all
-from ewa_mcp.core.taskmodel import Task, TaskStore
+from ewa_mcp.core.taskmodel import Task, TaskStore, export_json_schema
 
 from .lamp_domain import DOMAIN
 
@@ -65,6 +66,57 @@ def test_a_registered_domain_validates_its_tasks_but_not_typos(lighting):
     with pytest.raises(ValueError, match="already registered"):
         registry.register_domain(DOMAIN)
     assert "lighting" in registry.domain_names() and registry.environments()["lamp"].side == "embodied"
+
+
+def test_a_registered_worlds_task_models_are_read_as_a_built_in_worlds_are(lighting):
+    from .lamp_domain.goals import LampLit, LampStart
+
+    task = Task.model_validate(lamp_task())
+    assert isinstance(task.start.embodied, LampStart) and task.start.embodied.lit is False
+    assert isinstance(task.embodied_goals[0], LampLit)
+    assert Task.model_validate(task.model_dump(mode="json")) == task
+    # Typed: a wrong value or an unknown field is refused where it is, as a kitchen start's would be.
+    with pytest.raises(ValueError, match=r"start\.embodied\.lamp\.lit"):
+        Task.model_validate(lamp_task(start={"environment": "embodied", "embodied": {"kind": "lamp", "lit": "maybe"}}))
+    with pytest.raises(ValueError, match=r"embodied_goals\.0\.lamp_lit\.glow"):
+        Task.model_validate(lamp_task(embodied_goals=[{"kind": "lamp_lit", "glow": True}]))
+    # The exported schema holds the models of the worlds registered now, and only those.
+    assert {"LampStart", "LampLit"} <= set(export_json_schema()["$defs"])
+    registry.unregister_domain(DOMAIN.name)
+    try:
+        defs = export_json_schema()["$defs"]
+        assert not {"LampStart", "LampLit"} & set(defs) and "KitchenStart" in defs
+    finally:
+        registry.register_domain(DOMAIN)
+
+
+def test_task_models_that_do_not_fit_their_declaration_are_refused_naming_the_fix():
+    from . import lamp_domain
+
+    goals = f"{lamp_domain.__name__}.goals"
+    lamp = DOMAIN.environments[0]
+    task = lamp_task()
+    for changes, message in (
+        ({"start": f"{goals}:LampLit"}, r"must have kind: Literal\['lamp'\]"),
+        ({"goals": ("ewa_mcp.core.taskmodel:ToolCall",)}, "has no 'kind' field with a default"),
+        ({"goals": (f"{lamp_domain.__name__}.env:LampEnvironment",)}, "is not a pydantic model"),
+    ):
+        env = dataclasses.replace(lamp, **changes)
+        before = registry.use_only(dataclasses.replace(DOMAIN, environments=(env,)))
+        try:
+            with pytest.raises(ValueError, match=message):  # a RegistryError, reported by the validation
+                Task.model_validate(task)
+        finally:
+            registry.restore(before)
+    # With no web environment registered, a web start is refused, saying so.
+    before = registry.use_only(DOMAIN)
+    try:
+        Task.model_validate(task)
+        with pytest.raises(ValueError, match="no registered web environment declares a start"):
+            Task.model_validate(lamp_task(start={"environment": "embodied", "web": {"start_url": "home:/"},
+                                                 "embodied": {"kind": "lamp"}}))
+    finally:
+        registry.restore(before)
 
 
 async def test_a_domain_package_generates_plays_and_grades(lighting, tmp_path):

@@ -10,7 +10,9 @@ from __future__ import annotations
 from typing import Any
 
 from ..world import directions_via, get_world
-from ewa_mcp.core.taskmodel import DirectionsShown, PassedPlace, ReachedPlace, StartState, StreetStart, Task, WebStart
+from ewa_mcp.core.taskmodel import StartState, Task
+from ewa_mcp.envs.browser.goals import DirectionsShown, WebStart
+from ewa_mcp.envs.street.goals import PassedPlace, ReachedPlace, StreetStart
 from ewa_mcp.websites.map.places import WorldAdapter
 from ewa_mcp.taskgen.common import WALK_RULE, call, rng_for, site_url, step_budget
 
