@@ -59,6 +59,9 @@ class EnvironmentSpec:
     start: str | None = None
     goals: tuple[str, ...] = ()
     answers: tuple[str, ...] = ()
+    # "module:Model": the episode options it reads (start_episode's ``options``; ewa_mcp/core/options.py), each
+    # named with its prefix (kitchen_view); the kernel's own options (observation, seed, structured) come first.
+    options: str | None = None
 
     def hint(self) -> str:
         return self.tool_hint or f"{self.name}_* tools"

@@ -8,6 +8,7 @@ import json
 
 import pytest
 from mcp import Client
+from pydantic import BaseModel, Field
 
 from ewa_mcp.core import registry
 from ewa_mcp.graders import grade_run
@@ -156,6 +157,43 @@ async def test_a_domain_package_generates_plays_and_grades(lighting, tmp_path):
     assert [c.kind for c in results[good].conditions] == ["lamp_lit"]
     assert results[bad].overall_success is False and results[bad].conditions[0].note == "the lamp ended off"
     assert list(report.domains) == ["lighting"] and report.domains["lighting"].n == 2
+
+
+class LampOptions(BaseModel):
+    """The options of a lamp that declares some (the kernel's own come first)."""
+
+    lamp_brightness: int | None = Field(None, ge=1, le=10, description="how bright the lamp shines")
+
+
+async def test_a_registered_worlds_episode_options_are_start_episodes_own(tmp_path):
+    from ewa_mcp.core.options import episode_options
+
+    lamp = dataclasses.replace(DOMAIN.environments[0], options=f"{__name__}:LampOptions")
+    before = registry.use_only(dataclasses.replace(DOMAIN, environments=(lamp,)))
+    try:
+        assert list(episode_options().model_fields) == ["observation", "seed", "structured", "lamp_brightness"]
+        mcp, episodes = build_server(ServerConfig(task_dirs=[], run_dir=tmp_path / "run"))
+        episodes.tasks.add(Task.model_validate(lamp_task()))
+        async with Client(mcp) as client:
+            tools = {t.name: t for t in (await client.list_tools()).tools}
+            offered = tools["start_episode"].input_schema["properties"]["options"]["anyOf"][0]["properties"]
+            assert list(offered) == ["observation", "seed", "structured", "lamp_brightness"]
+            r = await client.call_tool("start_episode", {"task_id": "lamp-x", "options": {"lamp_brightness": 11}})
+            assert r.is_error and "lamp_brightness" in text_of(r)
+            r = await client.call_tool("start_episode", {"task_id": "lamp-x", "options": {"kitchen_view": "map"}})
+            assert r.is_error and "kitchen_view" in text_of(r)  # no kitchen registered: not an option here
+            r = await client.call_tool("start_episode", {"task_id": "lamp-x", "options": {"lamp_brightness": 3}})
+            assert not r.is_error, text_of(r)
+            assert episodes.get(r.structured_content["episode_id"]).options == {"observation": "text",
+                                                                                  "lamp_brightness": 3}
+        # An option may be declared once: a world that takes the kernel's name is refused, naming the fix.
+        clash = dataclasses.replace(lamp, options="ewa_mcp.core.options:EpisodeOptions")
+        registry.restore(before)
+        before = registry.use_only(dataclasses.replace(DOMAIN, environments=(clash,)))
+        with pytest.raises(registry.RegistryError, match="'observation' of 'lamp' is already declared by the kernel"):
+            episode_options()
+    finally:
+        registry.restore(before)
 
 
 def test_a_graded_domain_goal_without_its_domain_is_unreadable_not_guessed(lighting, tmp_path):

@@ -13,6 +13,7 @@ GEO = EnvironmentSpec(
     finish_hint="Geolocation tasks end with submit_location instead.",
     start=f"{__name__}.goals:GeoStart",
     answers=(f"{__name__}.goals:GeoAnswer",),
+    options=f"{__name__}.options:GeoOptions",
 )
 
 DOMAINS = [Domain("geolocation", (BROWSER, GEO), goal_kinds=WEB_GOALS, checks=WEB_CHECKS, writer=f"{__name__}.taskgen.geolocation:generate_tasks")]
