@@ -27,6 +27,7 @@ from ewa_mcp.websites.serve import site_service
 from .chromium import BrowserService, ChromiumNotFoundError, chromium_service
 from ewa_mcp.settings import BrowserConfig
 from .elements import ElementRegistry
+from .incremental import tree_changes
 from .pool import WarmContext
 from .safety import BlockedUrlError, UrlPolicy, normalize_origin
 from .settle import PAGE_HOOKS_JS
@@ -386,6 +387,19 @@ class BrowserSession:
     def mode(self) -> str:
         """The episode's observation mode: text, vision or both."""
         return str(self.options.get("observation") or "text")
+
+    def budget(self, requested: int | None = None) -> int:
+        """The size budget of a web observation: the one asked for, else the episode's option, else the config's."""
+        return int(requested or self.options.get("web_max_chars") or self.config.max_chars)
+
+    def see_tree(self, lines: list[str] | None, incremental: bool) -> str | None:
+        """Remember the tree lines an observation shows (None: it shows no tree); return the changes since the
+        last tree it showed when the observation may be incremental and the episode asked for that."""
+        changes = None
+        if incremental and lines is not None and self.options.get("web_incremental"):
+            changes = tree_changes(self.seen_tree, lines)
+        self.seen_tree = lines  # what the agent now knows of the page (a marks list shows no tree)
+        return changes
 
     def viewport_only(self, requested: bool | None = None) -> bool:
         if requested is not None:
