@@ -25,7 +25,8 @@ sys.path.insert(0, str(ROOT))
 from ewa_mcp.evaluation.heuristics import NAMES, heuristic_agent  # noqa: E402
 from ewa_mcp.evaluation.runner import play, select_tasks  # noqa: E402
 from ewa_mcp.graders import grade_run  # noqa: E402
-from ewa_mcp.core.taskmodel import GeoAnswer, Task, TaskStore  # noqa: E402
+from ewa_mcp.core.taskmodel import Task, TaskStore  # noqa: E402
+from ewa_mcp.envs.geo.goals import GeoAnswer
 
 LEVELS = ("continent", "country", "city", "street")
 DIFFICULTIES = ("easy", "medium", "hard")

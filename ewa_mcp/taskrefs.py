@@ -17,17 +17,11 @@ from functools import cached_property
 from pathlib import Path
 from typing import Any
 
-from .core.taskmodel import (
-    DirectionsShown,
-    GeoStart,
-    KitchenStart,
-    OrderPlaced,
-    PageVisited,
-    RecipeCompleted,
-    StreetStart,
-    Task,
-    _StreetTarget,
-)
+from .core.taskmodel import Task
+from .envs.browser.goals import DirectionsShown, OrderPlaced, PageVisited, RecipeCompleted
+from .envs.geo.goals import GeoStart
+from .envs.kitchen.goals import KitchenStart
+from .envs.street.goals import StreetStart, _StreetTarget
 
 _SITE_URL = re.compile(r"^([a-z][a-z0-9_-]*):(?!//)")  # "shop:/product/7"; not "http://..."
 

@@ -40,7 +40,8 @@ import gymnasium
 import numpy as np
 
 import ewa_mcp.gym  # noqa: F401  (registers the environments)
-from ewa_mcp.core.taskmodel import ReachedPlace, StreetStart, Task
+from ewa_mcp.core.taskmodel import Task
+from ewa_mcp.envs.street.goals import ReachedPlace, StreetStart
 from ewa_mcp.envs.street.world import get_world
 from ewa_mcp.geometry import bearing_deg, haversine_m
 from ewa_mcp.task_variants import embodied_only

@@ -3,9 +3,12 @@
 from __future__ import annotations
 
 import importlib
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from ewa_mcp.core.taskmodel import AnswerNumbers, GeoAnswer, TextAnswer
+from ewa_mcp.core.taskmodel import AnswerNumbers, TextAnswer
+
+if TYPE_CHECKING:
+    from ewa_mcp.envs.geo.goals import GeoAnswer
 
 from .hours import schedule
 from .models import ConditionResult

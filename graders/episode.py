@@ -10,7 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from ewa_mcp.core import registry
-from ewa_mcp.core.taskmodel import GeoAnswer, OrderPlaced, TextAnswer
+from ewa_mcp.core.taskmodel import TextAnswer
 
 from .answers import check_geo_answer, check_text_answer
 from .errors import Outcome, classify
@@ -77,6 +77,7 @@ def _orders_for_pickup(task: TaskView, events: list[dict[str, Any]]) -> list[dic
     if not events:
         return []
     from ewa_mcp.envs.browser import checks as web  # the shop's orders are the browser world's to read
+    from ewa_mcp.envs.browser.goals import OrderPlaced
 
     goals = [g for g in task.web_goals if isinstance(g, OrderPlaced)]
     if not goals:
@@ -85,6 +86,12 @@ def _orders_for_pickup(task: TaskView, events: list[dict[str, Any]]) -> list[dic
     for goal in goals:
         found.extend(o for o in web.matching_orders(events, goal) if o not in found)
     return found
+
+
+def _is_geo_answer(answer: Any) -> bool:
+    from ewa_mcp.envs.geo.goals import GeoAnswer  # imported only for a task with such an answer
+
+    return isinstance(answer, GeoAnswer)
 
 
 def _setting(task: TaskView, final: dict[str, Any]) -> str | None:
@@ -131,7 +138,7 @@ def grade_record(record: EpisodeRecord, radius_m: float | None = None) -> Episod
                                               met=None, note=bad.reason))
         if isinstance(task.answer, TextAnswer):
             conditions.append(check_text_answer(task.answer, answer))
-        elif isinstance(task.answer, GeoAnswer):
+        elif task.answer is not None and _is_geo_answer(task.answer):
             condition, geolocation = check_geo_answer(task.answer, submission)
             conditions.append(condition)
             if condition.met is None and condition.note:

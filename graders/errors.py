@@ -8,8 +8,6 @@ import re
 from dataclasses import dataclass
 from typing import Any
 
-from ewa_mcp.core.taskmodel import ReachedPlace
-
 from .models import ErrorClassification, ErrorGroup, NavigationResult
 from .rundir import EpisodeRecord
 from .trajectory import REPEAT_MIN, longest_repeat, page_loop, visits
@@ -171,7 +169,12 @@ def _misalignment(record: EpisodeRecord, outcome: Outcome, task: Any) -> str | N
         off = changed_off_task(state["objects"], goal_types(task.embodied_goals))
         if off:
             return f"changed {', '.join(off)}, which no goal of the task mentions"
-    for goal, nav in zip([g for g in task.embodied_goals if isinstance(g, ReachedPlace)], outcome.navigation):
+    reached: list[Any] = []
+    if any(getattr(g, "kind", None) == "reached_place" for g in task.embodied_goals):
+        from ewa_mcp.envs.street.goals import ReachedPlace  # the street's goal, imported only for a task with one
+
+        reached = [g for g in task.embodied_goals if isinstance(g, ReachedPlace)]
+    for goal, nav in zip(reached, outcome.navigation):
         if nav.success or not nav.stopped:
             continue
         store_nodes = task.metadata.get("store_nodes") if isinstance(task.metadata.get("store_nodes"), dict) else {}

@@ -13,7 +13,7 @@ from pydantic import BaseModel, Field, create_model
 from . import registry
 from .environment import Observation
 from .episodes import EpisodeError, EpisodeManager
-from .options import EpisodeOptions
+from .options import EpisodeOptions, episode_options
 from .response import (IMAGE_NAME, StepOutput, compact_requested, footer, image_links, observation_data, step_result,
                        tool_result)
 from .tool_table import EpisodeId, define_tool
@@ -190,11 +190,13 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
                 description="List benchmark tasks, optionally of one domain and difficulty (easy, medium, hard), a "
                 "page at a time.")(list_tasks)
 
-    @define_tool(mcp, title="Start an episode", effect="act",
-                 description="Start an episode of a task. Returns the episode_id to pass to every other tool.")
+    # The options are the kernel's and every registered environment's (ewa_mcp/core/options.py), read when the
+    # server is built.
+    options_model = episode_options()
+
     async def start_episode(task_id: str, options: EpisodeOptions | None = None,
                             ctx: Context | None = None) -> Annotated[CallToolResult, EpisodeStarted]:
-        opts = (options or EpisodeOptions()).model_dump(exclude_none=True)
+        opts = (options or options_model()).model_dump(exclude_none=True)
         episode = await episodes.start(task_id, opts, client=client_key(ctx))
         _, observation = await episodes.act(episode.id, "start_episode", {"task_id": task_id, "options": opts},
                                             _observe, environment=None, counted=False)
@@ -215,6 +217,10 @@ def register(mcp: MCPServer, episodes: EpisodeManager) -> None:
             f"{observation.text}\n{footer(episode)}"
         )
         return tool_result(out, text, observation.images, image_links(episode, observation.images))
+
+    start_episode.__annotations__["options"] = options_model | None
+    define_tool(mcp, title="Start an episode", effect="act",
+                description="Start an episode of a task. Returns the episode_id to pass to every other tool.")(start_episode)
 
     @define_tool(mcp, title="Observe the active environment", effect="look",
                  description="Show the active environment's observation again (counts as a step, like every call).")

@@ -1,10 +1,18 @@
-"""Per-episode options a client may pass to start_episode."""
+"""Per-episode options a client may pass to start_episode.
+
+The kernel's own options are below; each environment declares the options it reads (``EnvironmentSpec.options``,
+a pydantic model in its world package, each option named with its world's prefix), and ``episode_options()``
+assembles start_episode's parameter from the kernel's and every registered environment's, so that the kernel
+names no world's options and a plugin world adds its own as a built-in one does.
+"""
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, create_model
+
+from . import registry
 
 
 class EpisodeOptions(BaseModel):
@@ -13,25 +21,32 @@ class EpisodeOptions(BaseModel):
     observation: Literal["text", "vision", "both"] = Field(
         "text", description="text: scene graph / accessibility tree; vision: images; both: all"
     )
-    kitchen_backend: Literal["sim", "ai2thor"] | None = Field(
-        None, description="indoor backend (default: EWA_KITCHEN_BACKEND or the built-in simulator)"
-    )
-    kitchen_view: Literal["first_person", "map"] | None = Field(
-        None, description="kitchen image in vision/both modes: first_person (default, AI2-THOR's camera) or map "
-                          "(the labelled top-down plan)")
-    kitchen_camera_width: int | None = Field(None, ge=64, le=1024, description="kitchen camera width (default 300)")
-    kitchen_camera_height: int | None = Field(None, ge=64, le=1024, description="kitchen camera height (default 300)")
-    geolocation_setting: Literal["baseline", "embodied"] | None = Field(
-        None, description="override the geolocation task's setting"
-    )
     seed: int | None = Field(None, description="override the task's scene seed")
-    web_max_chars: int | None = Field(None, ge=500, le=500_000,
-                                      description="size budget of the web observation (default 24000 characters)")
-    web_viewport_only: bool | None = Field(None, description="web observation lists only elements in the viewport")
     structured: Literal["full", "compact"] | None = Field(
         None, description="structured content of observations: full (the observation's data; the default) or "
                           "compact (status and step counts only; the text carries the observation)")
-    web_incremental: bool | None = Field(
-        None, description="web observations after an action send only the lines of the page that changed since "
-                          "the agent last read it (default true; false: the whole page every time; "
-                          "browser_snapshot and get_observation always send the whole page)")
+
+
+def episode_options() -> type[EpisodeOptions]:
+    """start_episode's options: the kernel's, then each registered environment's in the order its tools are
+    listed, as one model named EpisodeOptions (unknown options are refused, naming the known ones)."""
+    fields: dict[str, Any] = {}
+    owner: dict[str, str] = {name: "the kernel" for name in EpisodeOptions.model_fields}
+    for env in registry.ordered_environments():
+        if env.options is None:
+            continue
+        model = registry.load_object(env.options)
+        if not (isinstance(model, type) and issubclass(model, BaseModel)):
+            raise registry.RegistryError(f"{env.options!r}, the options of {env.name!r}, is not a pydantic model; "
+                                         "name a BaseModel class")
+        for name, info in model.model_fields.items():
+            if name in owner:
+                raise registry.RegistryError(f"the option {name!r} of {env.name!r} is already declared by "
+                                             f"{owner[name]}; name it with the environment's prefix")
+            owner[name] = repr(env.name)
+            fields[name] = (info.annotation, info)
+    if not fields:
+        return EpisodeOptions
+    assembled: type[EpisodeOptions] = create_model("EpisodeOptions", __base__=EpisodeOptions,
+                                                   __module__=__name__, **fields)
+    return assembled

@@ -50,6 +50,18 @@ class EnvironmentSpec:
     instructions: str = ""
     finish_hint: str = ""
     status_fields: tuple[StatusField, ...] = ()
+    # Its task models, by import path ("module:Model", pydantic models in its goals.py), from which the kernel
+    # assembles the task schema (ewa_mcp/core/taskmodel.py): the start of its episodes (``start.web``, or
+    # ``start.embodied`` whose ``kind`` is its name), the goal kinds it owns (``web_goals`` or
+    # ``embodied_goals`` by its side) and the answer checks it owns (``answer``); each goal and answer model
+    # names its kind by the default of its ``kind`` field. A goal kind a domain checks but no environment
+    # declares a model for is read by the open model (``DomainGoal``), its fields the check's to read.
+    start: str | None = None
+    goals: tuple[str, ...] = ()
+    answers: tuple[str, ...] = ()
+    # "module:Model": the episode options it reads (start_episode's ``options``; ewa_mcp/core/options.py), each
+    # named with its prefix (kitchen_view); the kernel's own options (observation, seed, structured) come first.
+    options: str | None = None
 
     def hint(self) -> str:
         return self.tool_hint or f"{self.name}_* tools"

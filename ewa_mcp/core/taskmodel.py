@@ -7,11 +7,26 @@ directories written today can still be graded after the schema grows.
 from __future__ import annotations
 
 import json
+from collections.abc import Callable, Iterable, Sized
+from dataclasses import dataclass
 from pathlib import Path
-from collections.abc import Callable, Sized
-from typing import Annotated, Any, Literal
+from typing import Annotated, Any, Literal, Union
 
-from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag, ValidationError, field_validator
+from pydantic import (
+    AfterValidator,
+    BaseModel,
+    ConfigDict,
+    Discriminator,
+    Field,
+    GetCoreSchemaHandler,
+    GetJsonSchemaHandler,
+    Tag,
+    TypeAdapter,
+    ValidationError,
+    field_validator,
+)
+from pydantic.json_schema import JsonSchemaValue
+from pydantic_core import core_schema
 
 from . import registry
 
@@ -24,202 +39,238 @@ DIFFICULTIES: tuple[str, ...] = ("easy", "medium", "hard")
 EnvSide = Literal["web", "embodied"]
 
 
-class _Strict(BaseModel):
+class StrictModel(BaseModel):
+    """The base of every task part: unknown fields are refused (a typo is an error, not a silent default)."""
+
     model_config = ConfigDict(extra="forbid")
 
 
-# ---------------------------------------------------------------- start state
-class WebStart(_Strict):
-    # Site-relative URL such as "recipes:/" or "shop:/product/7"; the server maps site names
-    # to the loopback ports it serves them on, so tasks never hard-code a host.
-    start_url: str = "home:/"
 
 
-class KitchenStart(_Strict):
-    kind: Literal["kitchen"] = "kitchen"
-    scene: str = "FloorPlan1"
-    seed: int = 0
+# ---------------------------------------------------------------- the parts the worlds declare
+# The start of an episode, its goals and its answer checks are models the environments declare
+# (``EnvironmentSpec.start``, ``.goals``, ``.answers`` in ewa_mcp/core/registry.py; the built-in worlds in their
+# goals.py, a plugin in its own). The kernel names none of them: it assembles the task schema from what is
+# registered when a task is validated or the schema exported, so a world registered at run time
+# (``registry.register_domain``) is read exactly as a built-in one.
+
+@dataclass(frozen=True)
+class Declared:
+    """The task models the registered environments declare, by kind, in registration order."""
+
+    web_start: type[BaseModel] | None
+    embodied_starts: dict[str, type[BaseModel]]  # environment name (= start.embodied.kind) -> model
+    web_goals: dict[str, type[BaseModel]]
+    embodied_goals: dict[str, type[BaseModel]]
+    answers: dict[str, type[BaseModel]]
 
 
-class StreetStart(_Strict):
-    kind: Literal["street"] = "street"
-    city: str
-    node: str
-    heading: float = 0.0
+def _declared_model(path: str, what: str) -> type[BaseModel]:
+    model = registry.load_object(path)
+    if not (isinstance(model, type) and issubclass(model, BaseModel)):
+        raise registry.RegistryError(f"{path!r}, declared as {what}, is not a pydantic model; name a BaseModel class")
+    return model
 
 
-class GeoStart(_Strict):
-    kind: Literal["geo"] = "geo"
-    location_id: str
-    setting: Literal["baseline", "embodied"] = "embodied"
+def _kind_of(model: type[BaseModel], path: str, what: str) -> str:
+    field = model.model_fields.get("kind")
+    if field is None or not isinstance(field.default, str):
+        raise registry.RegistryError(f"{path!r}, declared as {what}, has no 'kind' field with a default; give it "
+                                     "kind: Literal[\"<its kind>\"] = \"<its kind>\"")
+    return field.default
 
 
-_BUILTIN_STARTS = {"kitchen", "street", "geo"}
+def _put(table: dict[str, type[BaseModel]], kind: str, model: type[BaseModel], path: str) -> None:
+    if table.setdefault(kind, model) is not model:
+        raise registry.RegistryError(f"{path!r} declares the kind {kind!r}, which {table[kind].__name__} already "
+                                     "declares; a kind has one model")
 
 
-def _excluding(kinds: set[str]) -> Any:
-    """JSON Schema for the open model's ``kind``: any string but the built-in kinds (so oneOf stays exclusive)."""
+_declared_cache: tuple[tuple[int, ...], Declared] | None = None
+
+
+def declared() -> Declared:
+    """What the registered environments declare (recomputed when the registered domains change)."""
+    global _declared_cache
+    key = tuple(id(d) for d in registry.domains())
+    if _declared_cache is not None and _declared_cache[0] == key:
+        return _declared_cache[1]
+    web_start: type[BaseModel] | None = None
+    starts: dict[str, type[BaseModel]] = {}
+    goals: dict[str, dict[str, type[BaseModel]]] = {"web": {}, "embodied": {}}
+    answers: dict[str, type[BaseModel]] = {}
+    for env in registry.environments().values():
+        if env.start is not None:
+            model = _declared_model(env.start, f"the start of {env.name!r}")
+            if env.side == "web":
+                web_start = web_start or model
+            else:
+                kind = model.model_fields["kind"].default if "kind" in model.model_fields else None
+                if kind != env.name:
+                    raise registry.RegistryError(
+                        f"{env.start!r}, the start of the embodied environment {env.name!r}, must have "
+                        f"kind: Literal[{env.name!r}] = {env.name!r} (start.embodied.kind names the environment)")
+                starts[env.name] = model
+        for path in env.goals:
+            model = _declared_model(path, f"a goal of {env.name!r}")
+            _put(goals[env.side], _kind_of(model, path, f"a goal of {env.name!r}"), model, path)
+        for path in env.answers:
+            model = _declared_model(path, f"an answer check of {env.name!r}")
+            _put(answers, _kind_of(model, path, f"an answer check of {env.name!r}"), model, path)
+    found = Declared(web_start, starts, goals["web"], goals["embodied"], answers)
+    _declared_cache = (key, found)
+    return found
+
+
+def _excluding(kinds: Callable[[], Iterable[str]]) -> Any:
+    """JSON Schema for an open model's ``kind``: any string but the declared kinds (so oneOf stays exclusive)."""
 
     def extra(schema: dict[str, Any]) -> None:
-        schema["not"] = {"enum": sorted(kinds)}
+        schema["not"] = {"enum": sorted(kinds())}
 
     return extra
 
 
 class DomainStart(BaseModel):
-    """The start of an embodied environment that a registered domain declares (ewa_mcp/core/registry.py) beside the
-    built-in ones; its fields are that environment's to read."""
+    """The start of an embodied environment that a registered domain uses but declares no start model for
+    (``EnvironmentSpec.start``); its fields are that environment's to read."""
 
     model_config = ConfigDict(extra="allow")
-    kind: str = Field(json_schema_extra=_excluding(_BUILTIN_STARTS))
+    kind: str = Field(json_schema_extra=_excluding(lambda: declared().embodied_starts))
 
     @field_validator("kind")
     @classmethod
     def _registered(cls, kind: str) -> str:
         names = sorted(n for n, e in registry.environments().items() if e.side == "embodied")
-        if kind in _BUILTIN_STARTS or kind not in names:
+        if kind in declared().embodied_starts or kind not in names:
             raise ValueError(f"unknown embodied environment {kind[:100]!r}; the embodied environments are: "
                              f"{', '.join(names)}")
         return kind
 
 
-def _kind_tag(builtin: set[str], other: str) -> Any:
-    """A discriminator: the built-in model of the value's ``kind``, else the open model of registered kinds."""
+def _kind_tag(declared_kinds: Iterable[str], other: str) -> Any:
+    """A discriminator: the declared model of the value's ``kind``, else the open model of registered kinds."""
+    kinds = set(declared_kinds)
 
     def tag(value: Any) -> str | None:
         kind = value.get("kind") if isinstance(value, dict) else getattr(value, "kind", None)
         if not isinstance(kind, str):
             return None
-        return kind if kind in builtin else other
+        return kind if kind in kinds else other
 
     return Discriminator(tag, custom_error_type="invalid_kind",
                          custom_error_message="the object needs a 'kind' naming a known kind")
-
-
-EmbodiedStart = Annotated[
-    Annotated[KitchenStart, Tag("kitchen")] | Annotated[StreetStart, Tag("street")] | Annotated[GeoStart, Tag("geo")]
-    | Annotated[DomainStart, Tag("other")],
-    _kind_tag(_BUILTIN_STARTS, "other"),
-]
-
-
-class StartState(_Strict):
-    environment: EnvSide = "web"
-    web: WebStart | None = None
-    embodied: EmbodiedStart | None = None
-
-
-# ---------------------------------------------------------------- goals
-class RecipeCompleted(_Strict):
-    """Web: the right recipe's last step was displayed."""
-
-    kind: Literal["recipe_completed"] = "recipe_completed"
-    recipe_id: str
-
-
-class OrderPlaced(_Strict):
-    """Web: an order exists with this product (and size, quantity, pickup store when given)."""
-
-    kind: Literal["order_placed"] = "order_placed"
-    product_id: str
-    size: str | None = None
-    quantity: int = 1
-    store_id: str | None = None
-
-
-class DirectionsShown(_Strict):
-    """Web: the map site showed walking directions between these two places."""
-
-    kind: Literal["directions_shown"] = "directions_shown"
-    origin: str
-    destination: str
-
-
-class PageVisited(_Strict):
-    """Web: a page of a site whose path starts with ``path_prefix`` was viewed."""
-
-    kind: Literal["page_visited"] = "page_visited"
-    site: str
-    path_prefix: str
-
-
-class ObjectState(_Strict):
-    """Embodied (kitchen): some object of exactly this type has ``state[prop] == value``.
-
-    Sliced or cracked pieces count for their source type (TomatoSliced for Tomato)."""
-
-    kind: Literal["object_state"] = "object_state"
-    object_type: str
-    prop: Literal["isSliced", "isCooked", "isBroken", "isToggled", "isOpen", "isPickedUp"]
-    value: bool = True
-
-
-class ObjectIn(_Strict):
-    """Embodied (kitchen): some object of this type (or a piece of it) is in/on this receptacle type."""
-
-    kind: Literal["object_in"] = "object_in"
-    object_type: str
-    receptacle_type: str
-    # When set, the object must also satisfy these states (e.g. cooked tomato slices on a plate).
-    with_state: dict[str, bool] = Field(default_factory=dict)
-
-
-class _StreetTarget(_Strict):
-    """A point of a city's street graph that a walk is checked against."""
-
-    city: str
-    node: str
-    lat: float
-    lng: float
-    radius_m: float = 25.0
-    place_id: str | None = None
-
-
-class ReachedPlace(_StreetTarget):
-    """Embodied (street): the walk ended (at the first street_stop, else when the episode finished)
-    within ``radius_m`` of the target."""
-
-    kind: Literal["reached_place"] = "reached_place"
-    # Shopping: the store must be the pickup store of the order that matched the web goal.
-    must_match_order_store: bool = False
-
-
-class PassedPlace(_StreetTarget):
-    """Embodied (street): the walk passed within ``radius_m`` of a waypoint before it ended."""
-
-    kind: Literal["passed_place"] = "passed_place"
-
-
-_BUILTIN_EMBODIED_GOALS = {"object_state", "object_in", "reached_place", "passed_place"}
 
 
 class DomainGoal(BaseModel):
     """Embodied: a goal kind a registered domain declares (``Domain.goal_kinds``), graded by the check that
     domain names for it (``Domain.checks``) against the embodied final state. Its fields are that check's."""
 
+    # The model of the kinds no environment declares a model for (``EnvironmentSpec.goals``).
     model_config = ConfigDict(extra="allow")
-    kind: str = Field(json_schema_extra=_excluding(_BUILTIN_EMBODIED_GOALS))
+    kind: str = Field(json_schema_extra=_excluding(lambda: declared().embodied_goals))
 
     @field_validator("kind")
     @classmethod
     def _registered(cls, kind: str) -> str:
-        if kind in _BUILTIN_EMBODIED_GOALS or registry.goal_check(kind) is None:
-            known = sorted(_BUILTIN_EMBODIED_GOALS | {k for d in registry.domains() for k in d.checks})
+        known_models = declared().embodied_goals
+        if kind in known_models or registry.goal_check(kind) is None:
+            known = sorted(set(known_models) | {k for d in registry.domains() for k in d.checks})
             raise ValueError(f"unknown embodied goal kind {kind[:100]!r}; the kinds are: {', '.join(known)}")
         return kind
 
 
-WebGoal = Annotated[RecipeCompleted | OrderPlaced | DirectionsShown | PageVisited, Field(discriminator="kind")]
-EmbodiedGoal = Annotated[
-    Annotated[ObjectState, Tag("object_state")] | Annotated[ObjectIn, Tag("object_in")]
-    | Annotated[ReachedPlace, Tag("reached_place")] | Annotated[PassedPlace, Tag("passed_place")]
-    | Annotated[DomainGoal, Tag("other")],
-    _kind_tag(_BUILTIN_EMBODIED_GOALS, "other"),
-]
+def _tagged(models: dict[str, type[BaseModel]], other: type[BaseModel]) -> Any:
+    """The declared models by kind, then the open one, chosen by ``kind``."""
+    if not models:
+        return other
+    members = [Annotated[m, Tag(k)] for k, m in models.items()] + [Annotated[other, Tag("other")]]
+    return Annotated[Union[tuple(members)], _kind_tag(models, "other")]  # noqa: UP007 (a union built at run time)
+
+
+def _by_kind(models: list[type[BaseModel]], nothing: str) -> Any:
+    """A union of models told apart by their ``kind`` field; ``nothing`` refuses every value when none exists."""
+    if not models:
+        def refuse(value: Any) -> Any:
+            raise ValueError(nothing)
+
+        return Annotated[Any, AfterValidator(refuse)]
+    if len(models) == 1:
+        return models[0]
+    return Annotated[Union[tuple(models)], Field(discriminator="kind")]  # noqa: UP007 (a union built at run time)
+
+
+def _assemble(part: str, found: Declared) -> Any:
+    if part == "web_start":
+        if found.web_start is None:
+            return _by_kind([], "no registered web environment declares a start; remove start.web")
+        return found.web_start
+    if part == "embodied_start":
+        return _tagged(found.embodied_starts, DomainStart)
+    if part == "web_goal":
+        return _by_kind(list(found.web_goals.values()), "no registered web environment declares a goal kind; "
+                                                         "remove the web goals")
+    if part == "embodied_goal":
+        return _tagged(found.embodied_goals, DomainGoal)
+    return _by_kind([TextAnswer, *found.answers.values()], "")
+
+
+_adapters: dict[tuple[str, int], TypeAdapter[Any]] = {}
+
+
+def _adapter(part: str) -> TypeAdapter[Any]:
+    found = declared()
+    key = (part, id(found))
+    adapter = _adapters.get(key)
+    if adapter is None:
+        if len(_adapters) > 64:  # registries that came and went (tests): keep the cache small
+            _adapters.clear()
+        adapter = _adapters[key] = TypeAdapter(_assemble(part, found))
+    return adapter
+
+
+class Assembled:
+    """Marks a task field whose type the registered environments declare: values are validated (and the
+    schema exported) by the union of the models they declare for ``part`` at that moment."""
+
+    def __init__(self, part: str):
+        self.part = part
+
+    def __get_pydantic_core_schema__(self, source: Any, handler: GetCoreSchemaHandler) -> core_schema.CoreSchema:
+        part = self.part
+
+        def schema(_: core_schema.CoreSchema, json_handler: GetJsonSchemaHandler) -> JsonSchemaValue:
+            # As a union of one, so that a single declared model is a $ref into $defs as a model field's type is
+            # (the handler writes the schema it is given in place; a union's members go through $defs).
+            return json_handler(core_schema.union_schema([_adapter(part).core_schema]))
+
+        return core_schema.no_info_plain_validator_function(lambda value: _adapter(part).validate_python(value),
+                                                            metadata={"pydantic_js_annotation_functions": [schema]})
+
+
+EmbodiedStart = Annotated[Any, Assembled("embodied_start")]
+
+
+def _untitled_web(schema: dict[str, Any]) -> None:
+    # start.web has no title, as a field whose type is one model has none (the schema names the model).
+    schema["properties"]["web"].pop("title", None)
+
+
+class StartState(StrictModel):
+    model_config = ConfigDict(json_schema_extra=_untitled_web)
+
+    environment: EnvSide = "web"
+    web: Annotated[Any, Assembled("web_start")] | None = None
+    embodied: EmbodiedStart | None = None
+
+
+# ---------------------------------------------------------------- goals
+WebGoal = Annotated[Any, Assembled("web_goal")]
+EmbodiedGoal = Annotated[Any, Assembled("embodied_goal")]
 
 
 # ---------------------------------------------------------------- answers
-class AnswerNumbers(_Strict):
+class AnswerNumbers(StrictModel):
     """Which numbers in an answer are values of the asked kind (a year, calories, a size in oz).
 
     The answer may hold no such number besides the expected one: "1713 or 1720" and "120 kcal, maybe 140"
@@ -234,7 +285,7 @@ class AnswerNumbers(_Strict):
     high: float | None = None
 
 
-class TextAnswer(_Strict):
+class TextAnswer(StrictModel):
     """A short text answer (docs/grading.md, "Answers that must commit").
 
     ``must_include``: every phrase must be named (as whole words, after normalisation), or one of its
@@ -255,27 +306,17 @@ class TextAnswer(_Strict):
     max_chars: int | None = Field(default=None, ge=1)
 
 
-class GeoAnswer(_Strict):
-    kind: Literal["geolocation"] = "geolocation"
-    lat: float
-    lng: float
-    continent: str
-    country: str
-    city: str
-    street: str
+AnswerCheck = Annotated[Any, Assembled("answer")]
 
 
-AnswerCheck = Annotated[TextAnswer | GeoAnswer, Field(discriminator="kind")]
-
-
-class ToolCall(_Strict):
+class ToolCall(StrictModel):
     """One step of an oracle solution: a tool name and its arguments (``episode_id`` is filled in)."""
 
     tool: str
     args: dict[str, Any] = Field(default_factory=dict)
 
 
-class Task(_Strict):
+class Task(StrictModel):
     schema_version: int = SCHEMA_VERSION
     id: str = Field(pattern=r"^[a-z0-9][a-z0-9_.\-]*$")
     domain: Domain
@@ -303,13 +344,19 @@ class Task(_Strict):
         """Which environment implementations the task's episodes hold: slot (web/embodied) -> registry name."""
         names: dict[EnvSide, str] = {}
         if has_web_environment(self.start.web, self.web_goals):
-            names["web"] = WEB_ENVIRONMENT
+            names["web"] = web_environment()
         if self.start.embodied is not None:
             names["embodied"] = self.start.embodied.kind
         return names
 
 
-WEB_ENVIRONMENT = "browser"  # the registry name of the one web environment
+def web_environment() -> str:
+    """The registry name of the one web environment (the environment whose side is "web")."""
+    names = [name for name, env in registry.environments().items() if env.side == "web"]
+    if not names:
+        raise registry.RegistryError("no registered domain has a web environment; a task with a web start or web "
+                                     "goals needs one")
+    return names[0]
 
 
 def has_web_environment(web_start: object | None, web_goals: Sized) -> bool:

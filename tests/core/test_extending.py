@@ -3,10 +3,12 @@ added through the action table only, both exercised end to end through a real MC
 
 from __future__ import annotations
 
+import dataclasses
 import json
 
 import pytest
 from mcp import Client
+from pydantic import BaseModel, Field
 
 from ewa_mcp.core import registry
 from ewa_mcp.graders import grade_run
@@ -14,7 +16,7 @@ from ewa_mcp.envs.kitchen.actions import TABLE, KitchenAction
 from ewa_mcp.envs.kitchen.commands import parse_command
 from ewa_mcp.server import ServerConfig, build_server
 from ewa_mcp.taskgen import generate_all
-from ewa_mcp.core.taskmodel import Task, TaskStore
+from ewa_mcp.core.taskmodel import Task, TaskStore, export_json_schema
 
 from .lamp_domain import DOMAIN
 
@@ -67,6 +69,57 @@ def test_a_registered_domain_validates_its_tasks_but_not_typos(lighting):
     assert "lighting" in registry.domain_names() and registry.environments()["lamp"].side == "embodied"
 
 
+def test_a_registered_worlds_task_models_are_read_as_a_built_in_worlds_are(lighting):
+    from .lamp_domain.goals import LampLit, LampStart
+
+    task = Task.model_validate(lamp_task())
+    assert isinstance(task.start.embodied, LampStart) and task.start.embodied.lit is False
+    assert isinstance(task.embodied_goals[0], LampLit)
+    assert Task.model_validate(task.model_dump(mode="json")) == task
+    # Typed: a wrong value or an unknown field is refused where it is, as a kitchen start's would be.
+    with pytest.raises(ValueError, match=r"start\.embodied\.lamp\.lit"):
+        Task.model_validate(lamp_task(start={"environment": "embodied", "embodied": {"kind": "lamp", "lit": "maybe"}}))
+    with pytest.raises(ValueError, match=r"embodied_goals\.0\.lamp_lit\.glow"):
+        Task.model_validate(lamp_task(embodied_goals=[{"kind": "lamp_lit", "glow": True}]))
+    # The exported schema holds the models of the worlds registered now, and only those.
+    assert {"LampStart", "LampLit"} <= set(export_json_schema()["$defs"])
+    registry.unregister_domain(DOMAIN.name)
+    try:
+        defs = export_json_schema()["$defs"]
+        assert not {"LampStart", "LampLit"} & set(defs) and "KitchenStart" in defs
+    finally:
+        registry.register_domain(DOMAIN)
+
+
+def test_task_models_that_do_not_fit_their_declaration_are_refused_naming_the_fix():
+    from . import lamp_domain
+
+    goals = f"{lamp_domain.__name__}.goals"
+    lamp = DOMAIN.environments[0]
+    task = lamp_task()
+    for changes, message in (
+        ({"start": f"{goals}:LampLit"}, r"must have kind: Literal\['lamp'\]"),
+        ({"goals": ("ewa_mcp.core.taskmodel:ToolCall",)}, "has no 'kind' field with a default"),
+        ({"goals": (f"{lamp_domain.__name__}.env:LampEnvironment",)}, "is not a pydantic model"),
+    ):
+        env = dataclasses.replace(lamp, **changes)
+        before = registry.use_only(dataclasses.replace(DOMAIN, environments=(env,)))
+        try:
+            with pytest.raises(ValueError, match=message):  # a RegistryError, reported by the validation
+                Task.model_validate(task)
+        finally:
+            registry.restore(before)
+    # With no web environment registered, a web start is refused, saying so.
+    before = registry.use_only(DOMAIN)
+    try:
+        Task.model_validate(task)
+        with pytest.raises(ValueError, match="no registered web environment declares a start"):
+            Task.model_validate(lamp_task(start={"environment": "embodied", "web": {"start_url": "home:/"},
+                                                 "embodied": {"kind": "lamp"}}))
+    finally:
+        registry.restore(before)
+
+
 async def test_a_domain_package_generates_plays_and_grades(lighting, tmp_path):
     assert generate_all(tmp_path / "tasks", ["lighting"]) == {"lighting": 2}
     store = TaskStore([tmp_path / "tasks"])
@@ -104,6 +157,43 @@ async def test_a_domain_package_generates_plays_and_grades(lighting, tmp_path):
     assert [c.kind for c in results[good].conditions] == ["lamp_lit"]
     assert results[bad].overall_success is False and results[bad].conditions[0].note == "the lamp ended off"
     assert list(report.domains) == ["lighting"] and report.domains["lighting"].n == 2
+
+
+class LampOptions(BaseModel):
+    """The options of a lamp that declares some (the kernel's own come first)."""
+
+    lamp_brightness: int | None = Field(None, ge=1, le=10, description="how bright the lamp shines")
+
+
+async def test_a_registered_worlds_episode_options_are_start_episodes_own(tmp_path):
+    from ewa_mcp.core.options import episode_options
+
+    lamp = dataclasses.replace(DOMAIN.environments[0], options=f"{__name__}:LampOptions")
+    before = registry.use_only(dataclasses.replace(DOMAIN, environments=(lamp,)))
+    try:
+        assert list(episode_options().model_fields) == ["observation", "seed", "structured", "lamp_brightness"]
+        mcp, episodes = build_server(ServerConfig(task_dirs=[], run_dir=tmp_path / "run"))
+        episodes.tasks.add(Task.model_validate(lamp_task()))
+        async with Client(mcp) as client:
+            tools = {t.name: t for t in (await client.list_tools()).tools}
+            offered = tools["start_episode"].input_schema["properties"]["options"]["anyOf"][0]["properties"]
+            assert list(offered) == ["observation", "seed", "structured", "lamp_brightness"]
+            r = await client.call_tool("start_episode", {"task_id": "lamp-x", "options": {"lamp_brightness": 11}})
+            assert r.is_error and "lamp_brightness" in text_of(r)
+            r = await client.call_tool("start_episode", {"task_id": "lamp-x", "options": {"kitchen_view": "map"}})
+            assert r.is_error and "kitchen_view" in text_of(r)  # no kitchen registered: not an option here
+            r = await client.call_tool("start_episode", {"task_id": "lamp-x", "options": {"lamp_brightness": 3}})
+            assert not r.is_error, text_of(r)
+            assert episodes.get(r.structured_content["episode_id"]).options == {"observation": "text",
+                                                                                  "lamp_brightness": 3}
+        # An option may be declared once: a world that takes the kernel's name is refused, naming the fix.
+        clash = dataclasses.replace(lamp, options="ewa_mcp.core.options:EpisodeOptions")
+        registry.restore(before)
+        before = registry.use_only(dataclasses.replace(DOMAIN, environments=(clash,)))
+        with pytest.raises(registry.RegistryError, match="'observation' of 'lamp' is already declared by the kernel"):
+            episode_options()
+    finally:
+        registry.restore(before)
 
 
 def test_a_graded_domain_goal_without_its_domain_is_unreadable_not_guessed(lighting, tmp_path):

@@ -15,7 +15,8 @@ from ewa_mcp.evaluation.heuristics.agents import (
     prior_location,
     question_of,
 )
-from ewa_mcp.core.taskmodel import GeoAnswer, TaskStore, TextAnswer
+from ewa_mcp.core.taskmodel import TaskStore, TextAnswer
+from ewa_mcp.envs.geo.goals import GeoAnswer
 from ewa_mcp.websites.wiki import store as wiki
 
 TASKS_DIR = Path(__file__).resolve().parents[2] / "tasks"

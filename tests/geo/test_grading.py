@@ -17,7 +17,7 @@ from ewa_mcp.envs.geo.checks import (
 
 from ewa_mcp.geometry import destination, haversine_km
 from ewa_mcp.envs.geo.names import countries_match, resolve_continent, resolve_country, street_core, streets_match
-from ewa_mcp.core.taskmodel import GeoAnswer
+from ewa_mcp.envs.geo.goals import GeoAnswer
 
 ABIDJAN = GeoAnswer(lat=5.3225, lng=-4.0185, continent="Africa", country="Ivory Coast", city="Abidjan",
                     street="Boulevard de la République")

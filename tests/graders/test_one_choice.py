@@ -9,7 +9,7 @@ from typing import Any
 
 from grading_builders import EpisodeBuilder, item, kitchen_task, make_task, order_event
 
-from ewa_mcp.core.taskmodel import OrderPlaced
+from ewa_mcp.envs.browser.goals import OrderPlaced
 from ewa_mcp.envs.browser.checks import check_order
 from ewa_mcp.graders import grade_episode
 

@@ -10,7 +10,8 @@ from pathlib import Path
 import pytest
 
 from ewa_mcp.core.paths import tasks_dir
-from ewa_mcp.core.taskmodel import DomainGoal, ObjectState, Task, TaskStore
+from ewa_mcp.core.taskmodel import DomainGoal, Task, TaskStore
+from ewa_mcp.envs.kitchen.goals import ObjectState
 from ewa_mcp.envs.kitchen import checks
 from ewa_mcp.envs.kitchen.taskgen.outcomes import (
     everything_outcome,
@@ -141,7 +142,7 @@ def test_heuristics_read_the_dish_and_the_missing_foods_from_the_intent():
 
 
 def test_following_every_same_named_recipe_fails_the_recipe_goal():
-    from ewa_mcp.core.taskmodel import RecipeCompleted
+    from ewa_mcp.envs.browser.goals import RecipeCompleted
     from ewa_mcp.envs.browser.checks import check_recipe
 
     def step(rid: str, n: int, of: int) -> dict:

@@ -9,7 +9,10 @@ from __future__ import annotations
 from ewa_mcp.core.registry import Domain, EnvironmentSpec
 
 BROWSER = EnvironmentSpec("browser", "web", f"{__name__}.env:BrowserEnvironment", f"{__name__}.tools",
-                          "browser_* tools", tool_order=20)
+                          "browser_* tools", tool_order=20, start=f"{__name__}.goals:WebStart",
+                          goals=tuple(f"{__name__}.goals:{model}"
+                                      for model in ("RecipeCompleted", "OrderPlaced", "DirectionsShown", "PageVisited")),
+                          options=f"{__name__}.options:BrowserOptions")
 
 # Web goals every domain with a browser may carry (graded by this world's checks.py).
 WEB_GOALS = ("recipe_completed", "order_placed", "directions_shown", "page_visited")

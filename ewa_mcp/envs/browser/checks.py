@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from ewa_mcp.core.taskmodel import DirectionsShown, OrderPlaced, PageVisited, RecipeCompleted
+from ewa_mcp.envs.browser.goals import DirectionsShown, OrderPlaced, PageVisited, RecipeCompleted
 
 from ewa_mcp.graders.models import CheckContext, ConditionResult
 

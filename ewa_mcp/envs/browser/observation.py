@@ -16,7 +16,6 @@ from typing import TYPE_CHECKING, Any, Literal
 from playwright.async_api import Error as PlaywrightError
 
 from ewa_mcp.core.environment import Observation
-from .incremental import tree_changes
 from .tree_text import RenderedTree, render_tree
 from .som import DRAW_MARKS_JS, REMOVE_MARKS_JS, marks_payload
 from .tabs import PAGE_INFO_JS, Tab, take_snapshot
@@ -173,7 +172,7 @@ async def present(session: BrowserSession, tab: Tab, collected: tuple[list[Any],
     # the previous page's (an observation after an action reads the facts separately).
     tab.last_title = facts[0]
     viewport_only = session.viewport_only(viewport_only)
-    budget = int(max_chars or session.options.get("web_max_chars") or session.config.max_chars)
+    budget = session.budget(max_chars)
     rendered = render_tree(tab.roots, lambda n: tab.ref_ids[n.ref or ""], title=facts[0], viewport=(facts[3], facts[4]),
                            viewport_only=viewport_only, max_chars=budget)
     # Every tab's title (the current tab's is in the facts). Gathered as tasks even with one tab:
@@ -185,12 +184,7 @@ async def present(session: BrowserSession, tab: Tab, collected: tuple[list[Any],
         lines.append(TabLine(i, t.last_title, url, session.site_url(url), i == session.active))
     body = body or ("marks" if session.mode() == "vision" else "tree")
     tree_lines = rendered.text.splitlines() if body == "tree" else None
-    changes = None
-    # On by default: a page after an action does not resend what the agent has already read of it; the option
-    # web_incremental false asks for the whole page every time (browser_snapshot and get_observation always are).
-    if incremental and tree_lines is not None and session.options.get("web_incremental", True):
-        changes = tree_changes(session.seen_tree, tree_lines)
-    session.seen_tree = tree_lines  # what the agent now knows of the page (a marks list shows no tree)
+    changes = session.see_tree(tree_lines, incremental)
     return build_observation(tabs=lines, facts=facts, url=tab.page.url, site_url=session.site_url(tab.page.url),
                              rendered=rendered, notices=session.take_notices(), body=body,
                              viewport_only=viewport_only, budget=budget, png=png, changes=changes)

@@ -69,7 +69,7 @@ class BrowserActions:
         tab = s.current()
         mark = tab.activity.mark()
         popups_before = s.popups_seen
-        s.blocked_nav = None
+        s.take_refused_navigation()  # a refusal before this action is not this action's
         try:
             # A last-resort bound: every step below has its own timeout, but keyboard input and
             # some CDP calls do not, and a page stuck in a script must not hang the episode.
@@ -160,27 +160,24 @@ class BrowserActions:
 
     async def _refuse_navigation(self, action_name: str, tab: Tab, deadline: float) -> None:
         s = self.session
-        url, s.blocked_nav = s.blocked_nav or "", None
+        url = s.take_refused_navigation() or ""
         # The refused request fails at once, but Chromium commits its error page for it a little later (a
         # form's POST, or any navigation on a busy machine, after the action has settled): wait for that
         # commit, so the tab is stepped back from the error page rather than left on it.
         await self._error_page_committed(s.current(), deadline)
-        s.notices = [n for n in s.notices if url[:120] not in n]
+        s.drop_notices_about(url)
         current = s.current()
         if current is not tab and (current.page.url in ("about:blank", "")
                                    or current.page.url.startswith("chrome-error:")):
             # A popup whose only destination was refused: close it, the agent stays where it was.
             current.closing = True
             await current.page.close()
-            s.tabs.remove(current)
-            s.active = s.tabs.index(tab)
-            current = tab
+            current = s.remove_tab(current, focus=tab)
         if current.page.url.startswith("chrome-error:"):
             # The browser's guard failed the navigation (a link, a form or a redirect off-site) and
             # the tab shows its error page: step back to where the agent was, which is no new visit.
-            s.restoring = True
             back_to = s.history[-1] if s.history else ""  # the last page the agent saw (no error pages there)
-            try:
+            with s.restoring_tabs():
                 try:
                     await current.page.go_back(wait_until="load")
                 except PlaywrightError:
@@ -195,8 +192,6 @@ class BrowserActions:
                             await current.page.goto(back_to, wait_until="load")
                         except PlaywrightError:
                             pass
-            finally:
-                s.restoring = False
         raise NavigationRefused(f"{action_name} led to {url[:200]}, which is refused: only the embedded sites are "
                        f"reachable ({s.policy.describe_allowed() if s.policy else ''}); the page is "
                        "unchanged")
@@ -345,12 +340,11 @@ class BrowserActions:
             try:
                 await tab.page.bring_to_front()
                 await navigate(s, tab, target)
-                refused = s.blocked_nav
+                refused = s.take_refused_navigation()
                 if refused is None and target != "about:blank" and tab.page.url.startswith("chrome-error:"):
                     refused = target
                 if refused is not None:  # e.g. a redirect off-site: no tab shows a page it did not open
-                    s.blocked_nav = None
-                    s.notices = [n for n in s.notices if refused[:120] not in n]
+                    s.drop_notices_about(refused)
                     raise EnvError(f"browser_new_tab: {target[:200]} led to {refused[:200]}, which is refused: only "
                                    "the embedded sites are reachable ("
                                    f"{s.policy.describe_allowed() if s.policy else ''}); no tab was opened")
@@ -367,12 +361,9 @@ class BrowserActions:
             if len(s.tabs) == 1:
                 raise EnvError("cannot close the only tab; open another with browser_new_tab first, or navigate "
                                "with browser_goto")
-            index = s.tabs.index(tab)
             tab.closing = True
             await tab.page.close()
-            s.tabs.remove(tab)
-            s.active = max(0, index - 1)
-            await s.tabs[s.active].page.bring_to_front()
+            await s.remove_tab(tab).page.bring_to_front()
 
         return await self.perform("browser_close_tab", act, settle=False)
 
@@ -380,9 +371,6 @@ class BrowserActions:
         s = self.session
 
         async def act(_: Tab) -> None:
-            if not 0 <= index < len(s.tabs):
-                raise EnvError(f"there is no tab [{index}]; the open tabs are 0 to {len(s.tabs) - 1}")
-            s.active = index
-            await s.tabs[index].page.bring_to_front()
+            await s.focus(index).page.bring_to_front()
 
         return await self.perform("browser_tab_focus", act, settle=False)

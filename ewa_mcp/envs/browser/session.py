@@ -15,6 +15,8 @@ observation.py; the actions, operations.py.
 from __future__ import annotations
 
 import asyncio
+import contextlib
+from collections.abc import Iterator
 from typing import Any
 
 from playwright.async_api import Error as PlaywrightError
@@ -25,6 +27,7 @@ from ewa_mcp.websites.serve import site_service
 from .chromium import BrowserService, ChromiumNotFoundError, chromium_service
 from ewa_mcp.settings import BrowserConfig
 from .elements import ElementRegistry
+from .incremental import tree_changes
 from .pool import WarmContext
 from .safety import BlockedUrlError, UrlPolicy, normalize_origin
 from .settle import PAGE_HOOKS_JS
@@ -242,6 +245,24 @@ class BrowserSession:
         notices, self.notices = self.notices, []
         return notices
 
+    def drop_notices_about(self, url: str) -> None:
+        """Forget the notices that name ``url`` (a refusal the agent is told about otherwise)."""
+        self.notices = [n for n in self.notices if url[:120] not in n]
+
+    def take_refused_navigation(self) -> str | None:
+        """The URL of the last main-frame navigation the guard refused since the last call, if any."""
+        url, self.blocked_nav = self.blocked_nav, None
+        return url
+
+    @contextlib.contextmanager
+    def restoring_tabs(self) -> Iterator[None]:
+        """While the session itself moves a tab (steps back, reopens a page), a page it opens is no popup."""
+        self.restoring = True
+        try:
+            yield
+        finally:
+            self.restoring = False
+
     # ------------------------------------------------------------ tabs
     def track(self, page: Any) -> Tab:
         for tab in self.tabs:
@@ -279,6 +300,20 @@ class BrowserSession:
             self.tabs.append(tab)
         self.active = self.tabs.index(tab)
         return tab
+
+    def remove_tab(self, tab: Tab, focus: Tab | None = None) -> Tab:
+        """Take a closed tab off the list; ``focus`` (else the tab before it) becomes current, and is returned."""
+        index = self.tabs.index(tab)
+        self.tabs.remove(tab)
+        self.active = self.tabs.index(focus) if focus is not None else max(0, index - 1)
+        return self.tabs[self.active]
+
+    def focus(self, index: int) -> Tab:
+        """Make the tab at ``index`` current (an index the agent gave: refused naming the open tabs)."""
+        if not 0 <= index < len(self.tabs):
+            raise EnvError(f"there is no tab [{index}]; the open tabs are 0 to {len(self.tabs) - 1}")
+        self.active = index
+        return self.tabs[index]
 
     async def discard_tab(self, tab: Tab, previous: int) -> None:
         """Close a tab an action opened and make ``previous`` current again."""
@@ -352,6 +387,21 @@ class BrowserSession:
     def mode(self) -> str:
         """The episode's observation mode: text, vision or both."""
         return str(self.options.get("observation") or "text")
+
+    def budget(self, requested: int | None = None) -> int:
+        """The size budget of a web observation: the one asked for, else the episode's option, else the config's."""
+        return int(requested or self.options.get("web_max_chars") or self.config.max_chars)
+
+    def see_tree(self, lines: list[str] | None, incremental: bool) -> str | None:
+        """Remember the tree lines an observation shows (None: it shows no tree); return the changes since the
+        last tree it showed when the observation may be incremental and the episode asked for that."""
+        changes = None
+        # On by default: a page after an action does not resend what the agent has already read of it; the option
+        # web_incremental false asks for the whole page every time (browser_snapshot and get_observation always are).
+        if incremental and lines is not None and self.options.get("web_incremental") is not False:
+            changes = tree_changes(self.seen_tree, lines)
+        self.seen_tree = lines  # what the agent now knows of the page (a marks list shows no tree)
+        return changes
 
     def viewport_only(self, requested: bool | None = None) -> bool:
         if requested is not None:

@@ -11,6 +11,9 @@ GEO = EnvironmentSpec(
     tool_order=40,
     instructions="Geolocation episodes end with submit_location instead of finish_episode.",
     finish_hint="Geolocation tasks end with submit_location instead.",
+    start=f"{__name__}.goals:GeoStart",
+    answers=(f"{__name__}.goals:GeoAnswer",),
+    options=f"{__name__}.options:GeoOptions",
 )
 
 DOMAINS = [Domain("geolocation", (BROWSER, GEO), goal_kinds=WEB_GOALS, checks=WEB_CHECKS, writer=f"{__name__}.taskgen.geolocation:generate_tasks")]

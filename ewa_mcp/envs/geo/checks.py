@@ -36,7 +36,7 @@ from ewa_mcp.envs.geo.names import (
     resolve_country,
     streets_match,
 )
-from ewa_mcp.core.taskmodel import GeoAnswer
+from ewa_mcp.envs.geo.goals import GeoAnswer
 
 LEVELS = ("continent", "country", "city", "street")
 BANDS_KM: dict[str, float] = {"street": 1.0, "city": 25.0, "region": 200.0, "country": 750.0, "continent": 2500.0}

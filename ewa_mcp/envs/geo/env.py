@@ -15,7 +15,7 @@ from typing import Any
 
 from ewa_mcp.core.environment import EnvError, Environment, Observation
 from ewa_mcp.geometry import DIRECTION_DEG, FOUR_DIRECTIONS, angle_diff, cardinal_word
-from ewa_mcp.core.taskmodel import GeoStart
+from ewa_mcp.envs.geo.goals import GeoStart
 from .describe import describe_view
 from .graph import START, Neighbour, Standpoint, build_graph
 from .locations import LOCATIONS, Location

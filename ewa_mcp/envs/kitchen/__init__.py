@@ -18,7 +18,9 @@ from ewa_mcp.core.registry import Domain, EnvironmentSpec
 from ..browser import BROWSER, WEB_CHECKS, WEB_GOALS
 
 KITCHEN = EnvironmentSpec("kitchen", "embodied", f"{__name__}.env:KitchenEnvironment", f"{__name__}.tools",
-                          "kitchen_* tools", tool_order=30)
+                          "kitchen_* tools", tool_order=30, start=f"{__name__}.goals:KitchenStart",
+                          goals=(f"{__name__}.goals:ObjectState", f"{__name__}.goals:ObjectIn"),
+                          options=f"{__name__}.options:KitchenOptions")
 
 DOMAINS = [
     Domain("cooking", (BROWSER, KITCHEN), generator=f"{__name__}.taskgen.cooking:generate",

@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from ewa_mcp.core.taskmodel import ObjectIn, ObjectState
+from ewa_mcp.envs.kitchen.goals import ObjectIn, ObjectState
 
 from ewa_mcp.graders.models import CheckContext, ConditionResult
 

@@ -14,6 +14,8 @@ STREET = EnvironmentSpec(
                 "you stand now is graded.",
     status_fields=(StatusField("walk_stopped", "tasks with a walk: whether street_stop ended it; null when there is "
                                "no walk", phrase="whether the walk is stopped (tasks with a walk)", when_true="walk stopped", when_false="walk not stopped"),),
+    start=f"{__name__}.goals:StreetStart",
+    goals=(f"{__name__}.goals:ReachedPlace", f"{__name__}.goals:PassedPlace"),
 )
 
 _GOALS = (*WEB_GOALS, "reached_place", "passed_place")

@@ -12,7 +12,7 @@ import math
 from typing import Any
 
 from ewa_mcp.geometry import haversine_m
-from ewa_mcp.core.taskmodel import PassedPlace, ReachedPlace
+from ewa_mcp.envs.street.goals import PassedPlace, ReachedPlace
 
 from ewa_mcp.graders.models import CheckContext, ConditionResult, NavigationResult
 

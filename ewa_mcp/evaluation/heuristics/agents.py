@@ -10,7 +10,8 @@ from typing import Any
 
 from ...envs.geo.names import resolve_continent
 from ...core.paths import tasks_dir
-from ...core.taskmodel import GeoAnswer, TaskStore, TextAnswer
+from ...core.taskmodel import TaskStore, TextAnswer
+from ...envs.geo.goals import GeoAnswer
 from ...websites.shop import catalog
 from ...websites.wiki import store as wiki
 from ..agents import Session

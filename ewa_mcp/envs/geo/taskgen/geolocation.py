@@ -13,7 +13,9 @@ import json
 from pathlib import Path
 from typing import Any
 
-from ewa_mcp.core.taskmodel import GeoAnswer, GeoStart, StartState, Task, ToolCall, WebStart
+from ewa_mcp.core.taskmodel import StartState, Task, ToolCall
+from ewa_mcp.envs.browser.goals import WebStart
+from ewa_mcp.envs.geo.goals import GeoAnswer, GeoStart
 from .. import gazetteer
 from ..hardness import task_difficulty
 from ..locations import LOCATIONS_LIST, Location

@@ -19,7 +19,9 @@ import re
 from typing import Any
 
 from ..planner import check_recipe_executable, plan_ops, scene_inventory
-from ewa_mcp.core.taskmodel import KitchenStart, OrderPlaced, RecipeCompleted, StartState, Task, WebStart
+from ewa_mcp.core.taskmodel import StartState, Task
+from ewa_mcp.envs.browser.goals import OrderPlaced, RecipeCompleted, WebStart
+from ewa_mcp.envs.kitchen.goals import KitchenStart
 from ewa_mcp.websites.recipes.catalog import Filters, load_catalog
 from ewa_mcp.websites.recipes.catalog import _token_in as token_in
 from ewa_mcp.websites.recipes.catalog import _tokens as tokens

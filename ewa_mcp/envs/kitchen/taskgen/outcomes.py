@@ -16,7 +16,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from ewa_mcp.core.taskmodel import ObjectIn, ObjectState
+from ewa_mcp.envs.kitchen.goals import ObjectIn, ObjectState
 from ewa_mcp.graders.models import ConditionResult
 from .. import checks
 from ..planner import PlanError, _parse_ops, _Planner

@@ -5,7 +5,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from ewa_mcp.core.taskmodel import DomainGoal, ObjectIn, ObjectState
+from ewa_mcp.core.taskmodel import DomainGoal
+from ewa_mcp.envs.kitchen.goals import ObjectIn, ObjectState
 
 PIECE_SOURCE = {"AppleSliced": "Apple", "BreadSliced": "Bread", "LettuceSliced": "Lettuce",
                 "PotatoSliced": "Potato", "TomatoSliced": "Tomato", "EggCracked": "Egg"}

@@ -13,8 +13,9 @@ from typing import Any
 
 from ewa_mcp.geometry import haversine_m
 from ..world import get_world
-from ewa_mcp.core.taskmodel import (DirectionsShown, PageVisited, PassedPlace, ReachedPlace, StartState, StreetStart,
-                                    Task, WebStart)
+from ewa_mcp.core.taskmodel import StartState, Task
+from ewa_mcp.envs.browser.goals import DirectionsShown, PageVisited, WebStart
+from ewa_mcp.envs.street.goals import PassedPlace, ReachedPlace, StreetStart
 from ewa_mcp.websites.map.places import WorldAdapter
 from ewa_mcp.websites.wiki import store as wiki
 from ewa_mcp.taskgen.common import WALK_RULE, call, rng_for, site_url, step_budget

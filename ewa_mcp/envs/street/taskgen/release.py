@@ -295,7 +295,9 @@ def _street(build: CityBuild, node: str) -> str:
 def make_task(p: Planned, city: str, source_name: str, world: Any, resolver: Any, report: ImportReport) -> dict:
     from ewa_mcp.taskgen.common import call, rng_for, site_url, step_budget
     from ..taskgen.navigation import start_heading, walk_oracle
-    from ewa_mcp.core.taskmodel import DirectionsShown, ReachedPlace, StartState, StreetStart, Task, WebStart
+    from ewa_mcp.core.taskmodel import StartState, Task
+    from ewa_mcp.envs.browser.goals import DirectionsShown, WebStart
+    from ewa_mcp.envs.street.goals import ReachedPlace, StreetStart
 
     start, dest = world.place(p.start_place), world.place(p.dest_place)
     typed = []

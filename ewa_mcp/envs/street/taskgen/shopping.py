@@ -8,7 +8,9 @@ from typing import Any
 
 from ewa_mcp.graders.textnorm import is_number, tokens
 from ..world import get_world
-from ewa_mcp.core.taskmodel import AnswerNumbers, OrderPlaced, ReachedPlace, StartState, StreetStart, Task, TextAnswer, WebStart
+from ewa_mcp.core.taskmodel import AnswerNumbers, StartState, Task, TextAnswer
+from ewa_mcp.envs.browser.goals import OrderPlaced, WebStart
+from ewa_mcp.envs.street.goals import ReachedPlace, StreetStart
 from ewa_mcp.websites.shop import catalog
 from ewa_mcp.taskgen.answer_checks import CALORIES, answer_rule, committed_answer
 from ewa_mcp.taskgen.common import WALK_RULE, call, ref, rng_for, site_url, step_budget

@@ -11,7 +11,9 @@ from typing import Any
 from ewa_mcp.geometry import haversine_m
 from ewa_mcp.graders.textnorm import contains_phrase, find_spans, tokens
 from ..world import get_world
-from ewa_mcp.core.taskmodel import PageVisited, ReachedPlace, StartState, StreetStart, Task, WebStart
+from ewa_mcp.core.taskmodel import StartState, Task
+from ewa_mcp.envs.browser.goals import PageVisited, WebStart
+from ewa_mcp.envs.street.goals import ReachedPlace, StreetStart
 from ewa_mcp.websites.wiki import store as wiki
 from ewa_mcp.taskgen.answer_checks import METRES, YEARS, answer_rule, committed_answer
 from ewa_mcp.taskgen.common import WALK_RULE, call, rng_for, site_url, step_budget
