@@ -285,6 +285,39 @@ def two_constraints(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dic
     return [(suffix, merged) for _, suffix, merged in pairs]
 
 
+def word_pairs(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dict[str, Any]]]:
+    """Hard: pairs of constraints that together leave a recipe with a look-alike alone among the recipes of a
+    word of its name (the filters carry the word as ``q``), pairs where neither constraint alone does first;
+    [] when no word serves. Named outright, the pair was a choice between two: opening the first listed
+    recipe passed about 44 % of hard tasks (issue 26, the first-recipe agent). A word whose search lists
+    the target first is never used."""
+    if recipe.get("pair_id") is None:
+        return []
+    for word in reversed(tokens(recipe["name"])):
+        if word in NAME_WORD_SKIP or len(word) < 3:
+            continue
+        listed = named_with(word, catalog)
+        if len({r["name"] for r in listed}) < NAME_WORD_MIN_NAMES or listed[0]["id"] == recipe["id"]:
+            continue
+        others = [r for r in listed if r["id"] != recipe["id"]]
+        options = constraint_options(recipe, catalog, others, wide=True)
+
+        def alone(f: dict[str, Any], word: str = word) -> bool:
+            return [r["id"] for r in named_with(word, catalog, f)] == [recipe["id"]]
+
+        single = {suffix: alone(f) for suffix, f in options}
+        pairs: list[tuple[int, str, dict[str, Any]]] = []
+        for i, (s1, f1) in enumerate(options):
+            for s2, f2 in options[i + 1:]:
+                merged = merge_filters(f1, f2)
+                if merged is not None and alone(merged):
+                    pairs.append((int(single[s1]) + int(single[s2]), f"{s1}. {s2}", {**merged, "q": word}))
+        if pairs:
+            pairs.sort(key=lambda item: item[0])  # stable: the options' own order within a rank
+            return [(suffix, merged) for _, suffix, merged in pairs]
+    return []
+
+
 def food_treatments(ops: list[dict[str, Any]]) -> dict[str, tuple[bool, str | None, str | None]]:
     """Per food the recipe works with: (cut or cracked, where it cooks or None for raw, where it is served)."""
     out: dict[str, tuple[bool, str | None, str | None]] = {}
@@ -510,9 +543,12 @@ def generate() -> list[Task]:
         scenes = [s for s in scenes if not missing_equipment(recipe, inventories[s])]
         # Hard: two constraints, two needed foods missing (replacing cook tasks, so the suite keeps its size).
         hard = 0
-        pairs = two_constraints(recipe, catalog)
-        # Told apart by a step where one is (the steps must be read); else by two constraints together.
+        # Told apart by a step where one is (the steps must be read); else by two constraints together, among
+        # the recipes of a word of its name where one serves (several to choose from, not a pair).
         step = telling_step(recipe, catalog)
+        pairs = two_constraints(recipe, catalog)
+        if step is None:
+            pairs = word_pairs(recipe, catalog) or pairs
         if pairs and len(foods) >= 2:
             for scene in scenes:
                 if hard >= HARD_PER_RECIPE:
