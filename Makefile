@@ -12,15 +12,20 @@ LOCK := requirements.lock
 # `verifiers` extras (both in `test`) list the dependencies they do need.
 NODEPS := openenv-core verifiers
 
-.PHONY: run test lint install lock chromium egl bench clean
+.PHONY: run test test-slow lint install lock chromium egl bench clean
 
 # The main job on the embedded defaults: the oracle plays a deterministic sample of every domain
 # through the real MCP server, then the run is graded and the paper-shaped table printed.
 run: install chromium egl
 	$(BIN)/ewa-mcp eval --agent oracle --sample 3 --workers 2
 
+# The suite but its end-to-end tests (marked slow: wheels built and installed, every Inspect task, workers killed,
+# training runs), which `make test-slow` runs; CI runs both (.ci/run).
 test: install chromium egl lint
-	$(BIN)/pytest
+	$(BIN)/pytest -m "not slow"
+
+test-slow: install chromium egl
+	$(BIN)/pytest -m slow
 
 # Bug-finding lint rules, the type checker and the import contracts, all configured in pyproject.toml.
 # The contracts and the type checker run on the installed layout (websites/ and graders/ inside ewa_mcp/, as the

@@ -14,8 +14,9 @@ import pytest
 from ewa_mcp.evaluation.lifeline import _alive, descendants
 from ewa_mcp.evaluation.workers import STAGING
 
+# End to end (minutes of the suite's time): `make test-slow`, which CI runs after `make test`.
 pytestmark = [pytest.mark.browser, pytest.mark.skipif(not sys.platform.startswith("linux"),
-                                                      reason="the process tree is read from /proc")]
+                                                      reason="the process tree is read from /proc"), pytest.mark.slow]
 
 
 @pytest.fixture(scope="module")

@@ -19,6 +19,9 @@ from ewa_mcp.core.taskmodel import TaskStore  # noqa: E402
 
 from .test_eval_workers import StallOnce, drive_until_stalled, grades, grades_in_one_process, landed  # noqa: E402
 
+# End to end (minutes of the suite's time): `make test-slow`, which CI runs after `make test`.
+pytestmark = pytest.mark.slow
+
 
 def ray_tasks():
     store = TaskStore([tasks_dir()])

@@ -16,6 +16,7 @@ from collections import Counter
 from pathlib import Path
 
 import anyio
+import pytest
 from mcp import Client
 
 from ewa_mcp.evaluation.agents import OracleAgent
@@ -24,6 +25,9 @@ from ewa_mcp.graders import grade_run
 from ewa_mcp.core.paths import tasks_dir
 from ewa_mcp.server import ServerConfig, build_server
 from ewa_mcp.core.taskmodel import TaskStore
+
+# End to end (minutes of the suite's time): `make test-slow`, which CI runs after `make test`.
+pytestmark = pytest.mark.slow
 
 GEO = "geo-000[1-4]-baseline"  # four geolocation tasks without a browser: quick to play
 CHROMIUM = Path("/usr/bin/chromium")

@@ -23,6 +23,9 @@ from ewa_mcp.graders import grade_run
 from ewa_mcp.core.paths import tasks_dir
 from ewa_mcp.core.taskmodel import TaskStore
 
+# End to end (minutes of the suite's time): `make test-slow`, which CI runs after `make test`.
+pytestmark = pytest.mark.slow
+
 
 def small_tasks():
     store = TaskStore([tasks_dir()])

@@ -22,6 +22,7 @@ pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="th
 # land on the other thread, where Python runs no handler.
 WORKER = r"""
 import os, signal, subprocess, sys, threading, time
+from pathlib import Path
 from ewa_mcp.evaluation.lifeline import bind_to_parent
 
 staging = Path(sys.argv[1])

@@ -10,6 +10,9 @@ import pytest
 
 from ewa_mcp.evaluation.human import parse_command
 
+# End to end (minutes of the suite's time): `make test-slow`, which CI runs after `make test`.
+pytestmark = pytest.mark.slow
+
 
 def test_parse_command():
     assert parse_command('kitchen_put object=Tomato receptacle="Plate"') == (

@@ -12,7 +12,8 @@ from ewa_mcp.graders import grade_episode
 
 from .test_llm_agents import load_example
 
-pytestmark = pytest.mark.timeout(600)
+# End to end (minutes of the suite's time): `make test-slow`, which CI runs after `make test`.
+pytestmark = [pytest.mark.timeout(600), pytest.mark.slow]
 
 
 def test_a_short_training_run_learns_to_walk_toward_the_destination(tmp_path):

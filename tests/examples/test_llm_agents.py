@@ -14,6 +14,9 @@ from ewa_mcp.core.paths import REPO_ROOT
 
 from .fake_llm import FakeLLMServer, ScriptedModel
 
+# End to end (minutes of the suite's time): `make test-slow`, which CI runs after `make test`.
+pytestmark = pytest.mark.slow
+
 SCRIPT = [("get_observation", {}), ("no_such_tool", {}), ("finish_episode", {"answer": "hello"})]
 
 

@@ -1,7 +1,8 @@
-"""Every cooking task asks for a choice (issue 26, principle 1): a recipe whose name no other recipe has
-is asked for by a word of its name that several recipes share, with the constraint that leaves it alone
-among them. Named outright, following the only recipe of that name was the whole task, and the
-look-alike agent (open the recipes of the name, cook the first) passed half the easy tasks."""
+"""Every cooking task asks for a choice (issue 26, principle 1): an easy or medium task asks for its recipe
+by a word of its name that several recipes share (or, where no word serves, by an ingredient several
+recipes use), with the constraint that leaves it alone among them. Named outright, a recipe with a name of
+its own needed no choosing (the look-alike agent passed half the easy tasks), and one with a same-named
+look-alike was a choice between two: opening the first listed recipe passed about 40 % of the tasks."""
 
 from __future__ import annotations
 
@@ -14,13 +15,17 @@ import pytest
 
 from ewa_mcp.core.paths import tasks_dir
 from ewa_mcp.core.taskmodel import TaskStore
-from ewa_mcp.envs.kitchen.taskgen.cooking import NAME_WORD_MIN_NAMES, look_alikes, named_with
+from ewa_mcp.envs.kitchen.taskgen.cooking import NAME_WORD_MIN_NAMES, look_alikes, made_with, named_with
 from ewa_mcp.evaluation.heuristics.agents import listed_recipes
 from ewa_mcp.websites.recipes.catalog import load_catalog
 
 # Recipes whose every word is shared by too few names for a choice (Welsh Rarebit, Potato Harra, ...) are
 # still named outright; their tasks must stay a small share of every difficulty.
 MAX_NOTHING_TO_CHOOSE = 0.05
+# The share of easy and medium tasks whose target is the first recipe listed for what the intent names: the
+# ceiling of the first-recipe agent: the issue's bar (measured 8.3 % easy, 5.0 % medium; 40 % when pairs
+# were named).
+MAX_TARGET_FIRST = 0.10
 
 
 @pytest.fixture(scope="module")
@@ -44,6 +49,19 @@ def test_almost_every_task_has_a_look_alike_to_tell_apart(tasks):
     for task in tasks:
         recipe = catalog.by_id[task.metadata["recipe_id"]]
         word = task.metadata.get("name_word")
+        ingredient = task.metadata.get("ingredient")
+        if ingredient is not None:
+            # Asked by an ingredient: the name is not given, recipes of several names use it, and the
+            # stated constraint (the oracle's search filters) leaves the target alone among them.
+            assert word is None and recipe["name"] not in task.intent, task.id
+            assert f'made with "{ingredient}"' in task.intent, task.id
+            assert len({r["name"] for r in made_with(ingredient, catalog)}) >= NAME_WORD_MIN_NAMES, task.id
+            search = task.oracle[0].args["url"]
+            query = parse_qs(urlsplit(search).query)
+            assert "q" not in query and ingredient in query["include"], task.id
+            left = made_with(ingredient, catalog, _search_filters(search))
+            assert [r["id"] for r in left] == [recipe["id"]], (task.id, [r["id"] for r in left])
+            continue
         if word is None:
             assert recipe["name"] in task.intent, task.id
             nothing[task.difficulty] += names[recipe["name"]] == 1
@@ -80,3 +98,40 @@ def test_a_word_task_is_told_from_the_recipes_of_its_word():
     assert unique["id"] not in {r["id"] for r in rivals} and len({r["name"] for r in rivals}) >= 2
     paired = next(r for r in catalog.recipes if names[r["name"]] == 2)
     assert [r["name"] for r in look_alikes(paired, catalog)] == [paired["name"]]
+
+
+def test_a_guess_at_the_first_listed_recipe_is_seldom_right(tasks):
+    """The first-recipe agent's ceiling on easy and medium tasks; and a task that asks for a recipe with a
+    same-named look-alike by a word or an ingredient never lists the target first (named, it would be a
+    coin toss; asked that way, a sure pass)."""
+    catalog = load_catalog()
+    names = Counter(r["name"] for r in catalog.recipes)
+    total, first = Counter(), Counter()
+    for task in tasks:
+        if task.difficulty == "hard":
+            continue
+        listed = listed_recipes(task.intent)
+        target_first = listed[0]["id"] == task.metadata["recipe_id"]
+        total[task.difficulty] += 1
+        first[task.difficulty] += target_first
+        asked_by = task.metadata.get("name_word") or task.metadata.get("ingredient")
+        if asked_by and names[task.metadata["recipe_name"]] > 1:
+            assert not target_first, task.id
+    assert set(total) == {"easy", "medium"}
+    for difficulty, count in total.items():
+        assert first[difficulty] <= MAX_TARGET_FIRST * count, (difficulty, first[difficulty], count)
+
+
+def test_a_pair_asked_by_a_word_is_told_from_every_recipe_of_the_word(tasks):
+    catalog = load_catalog()
+    names = Counter(r["name"] for r in catalog.recipes)
+    task = next(t for t in tasks if t.metadata.get("name_word") and names[t.metadata["recipe_name"]] == 2)
+    recipe = catalog.by_id[task.metadata["recipe_id"]]
+    rivals = look_alikes(recipe, catalog, task.metadata["name_word"])
+    assert recipe["name"] in {r["name"] for r in rivals}  # its same-named look-alike ...
+    assert len({r["name"] for r in rivals}) >= NAME_WORD_MIN_NAMES - 1  # ... and the other names of the word
+    by_ingredient = next(t for t in tasks if t.metadata.get("ingredient"))
+    recipe = catalog.by_id[by_ingredient.metadata["recipe_id"]]
+    rivals = look_alikes(recipe, catalog, ingredient=by_ingredient.metadata["ingredient"])
+    assert recipe["id"] not in {r["id"] for r in rivals}
+    assert all(by_ingredient.metadata["ingredient"] in {i["name"] for i in r["ingredients"]} for r in rivals)

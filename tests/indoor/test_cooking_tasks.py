@@ -61,7 +61,9 @@ def test_every_step_of_every_cooking_task_is_doable_or_marked(tasks):
         # has (they stay whole and raw), nothing else.
         buy = task.metadata["buy"] or []
         bought = [buy] if isinstance(buy, str) else list(buy)
-        assert task.embodied_goals == kitchen_goals(recipe, task.start.embodied.scene, bought), task.id
+        assert task.embodied_goals == kitchen_goals(recipe, task.start.embodied.scene, bought,
+                                                    task.metadata.get("name_word"),
+                                                    task.metadata.get("ingredient")), task.id
         assert task.embodied_goals[:len(outcome_goals(recipe_ops(recipe)))] == outcome_goals(recipe_ops(recipe))
 
 

@@ -132,6 +132,22 @@ def test_observation_shows_pose_holding_reach_and_states():
     assert "In reach" not in vision_text and "objects" not in vision_data
 
 
+def test_an_appliance_that_holds_nothing_says_so():
+    """Appliances are listed even when empty; without a mark a closed, empty fridge read as 'not looked into'
+    (play-testers opened it to find out). One that holds something lists it in braces instead."""
+    s = new_session("FloorPlan12")  # its fridge starts empty
+    fridge = s.by_handle["fridge_1"]
+    assert not any(fridge in (obj.get("parentReceptacles") or []) for obj in s.objects.values())
+    text, _ = build_observation(s, "text")
+    line = next(line for line in text.splitlines() if line.startswith("- Fridge_1"))
+    assert "{empty}" in line and "(closed)" in line
+    assert "Fridge_1" not in next((ln for ln in text.splitlines() if ln.startswith("Empty:")), "")
+    full = new_session("FloorPlan5")
+    text, _ = build_observation(full, "text")
+    line = next(line for line in text.splitlines() if line.startswith("- Fridge_1"))
+    assert "{empty}" not in line and "{" in line
+
+
 def test_held_object_and_its_contents_are_shown():
     s = new_session("FloorPlan12")
     s.teleport("Plate")

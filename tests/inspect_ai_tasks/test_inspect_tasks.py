@@ -22,6 +22,9 @@ from ewa_mcp import inspect_tasks  # noqa: E402
 from ewa_mcp.core.paths import tasks_dir  # noqa: E402
 from ewa_mcp.core.taskmodel import TaskStore  # noqa: E402
 
+# End to end (minutes of the suite's time): `make test-slow`, which CI runs after `make test`.
+pytestmark = pytest.mark.slow
+
 
 
 @pytest.fixture(autouse=True)

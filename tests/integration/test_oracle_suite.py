@@ -16,6 +16,9 @@ from ewa_mcp.graders import grade_run
 from ewa_mcp.core.paths import tasks_dir
 from ewa_mcp.core.taskmodel import TaskStore
 
+# End to end (minutes of the suite's time): `make test-slow`, which CI runs after `make test`.
+pytestmark = pytest.mark.slow
+
 DOMAINS = ["cooking", "navigation", "shopping", "traveling", "geolocation"]
 needs_browser = pytest.mark.skipif(
     not (shutil.which("chromium") or shutil.which("chromium-browser")), reason="no Chromium: apt-get install chromium")

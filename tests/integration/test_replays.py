@@ -12,6 +12,9 @@ import pytest
 from ewa_mcp.graders import grade_run
 from ewa_mcp.core.paths import REPO_ROOT
 
+# End to end (minutes of the suite's time): `make test-slow`, which CI runs after `make test`.
+pytestmark = pytest.mark.slow
+
 REPLAYS = REPO_ROOT / "examples" / "replays"
 EXPECTED = json.loads((REPLAYS / "expected.json").read_text())
 

@@ -55,7 +55,9 @@ def test_street_ahead_and_cross_streets_follow_the_graph(world):
 def test_the_details_a_description_names_are_drawn(world):
     # The library's description mentions two stone lions, steps, columns and arched entrances: standing at
     # its door and facing it, the lions are in the picture (and not in the same view of a plain building).
-    from ewa_mcp.envs.street.street_view import LION, details_of, render
+    from ewa_mcp.envs.street.facades import LION
+    from ewa_mcp.envs.street.scene import details_of
+    from ewa_mcp.envs.street.street_view import render
 
     library = world.place("poi-manhattan-new-york-public-library-stephen-a-schwarzman-building")
     assert {"lions", "steps", "columns", "arch"} <= details_of(library.description_hint)

@@ -14,7 +14,8 @@ from ewa_mcp.core.paths import task_dirs
 from ewa_mcp.settings import load_settings
 from ewa_mcp.core.taskmodel import TaskStore
 
-pytestmark = pytest.mark.browser
+# End to end (minutes of the suite's time): `make test-slow`, which CI runs after `make test`.
+pytestmark = [pytest.mark.browser, pytest.mark.slow]
 TASKS = ["geo-0018-baseline", "navigation-boston-000"]
 
 

@@ -17,6 +17,9 @@ from ewa_mcp.openenv_env import EwaAction, EwaEnvClient, EwaOpenEnv, create_ewa_
 
 from .helpers import ONE_PER_DOMAIN, embodied_only
 
+# End to end (minutes of the suite's time): `make test-slow`, which CI runs after `make test`.
+pytestmark = pytest.mark.slow
+
 # A street walk without its map site (no browser: starts fast) and a geolocation task as shipped.
 WALK = "openenv-walk-000"
 GEO = ONE_PER_DOMAIN["geolocation"]

@@ -14,6 +14,9 @@ from ewa_mcp.taskgen.splits import (generate_split, instance_key, public_test_ta
 from ewa_mcp.core.taskmodel import TaskStore
 from ewa_mcp.graders import grade_episode
 
+# End to end (minutes of the suite's time): `make test-slow`, which CI runs after `make test`.
+pytestmark = pytest.mark.slow
+
 
 @pytest.fixture(scope="module")
 def navigation_test_keys():

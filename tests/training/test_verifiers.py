@@ -16,6 +16,9 @@ from ewa_mcp.gym import _Runtime
 from examples.fake_llm import FakeLLMServer, ScriptedModel
 from .helpers import ONE_PER_DOMAIN
 
+# End to end (minutes of the suite's time): `make test-slow`, which CI runs after `make test`.
+pytestmark = pytest.mark.slow
+
 GEO = ONE_PER_DOMAIN["geolocation"]
 WALK = "verifiers-walk-000"  # the navigation task without its map site: a street walk, no browser
 

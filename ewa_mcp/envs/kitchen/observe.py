@@ -155,7 +155,10 @@ def build_observation(session: KitchenSession, mode: str = "text", *, view: str 
         if not children.get(object_id) and obj["objectType"] not in _APPLIANCES:
             empty.append(object_id)
             continue
-        lines.append(f"- {_describe(session, object_id, children)} · {obj['distance']:.1f} m")
+        # An appliance is listed even when it holds nothing; say so, or a closed fridge with no {…} reads as
+        # "not looked into" (play-testers opened empty fridges to find out).
+        nothing = " {empty}" if obj.get("receptacle") and not children.get(object_id) else ""
+        lines.append(f"- {_describe(session, object_id, children)}{nothing} · {obj['distance']:.1f} m")
     if empty:
         closed = [i for i in empty if session.objects[i].get("openable") and not session.objects[i].get("isOpen")]
         opened = [i for i in empty if i not in closed]

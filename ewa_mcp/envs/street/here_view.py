@@ -29,7 +29,7 @@ from .scene import (
     park_features,
     sign_colour_of,
 )
-from .street_view import FACADE_X_M, ROAD_HALF_M, _capped_height, _sign_colour, draw_details, draw_facade
+from .facades import FACADE_X_M, ROAD_HALF_M, _capped_height, _sign_colour, draw_details, draw_facade
 
 FRONT_Z_M = 13.0  # a place straight across the sidewalk: its front this deep (the end wall stands at 14 m)
 FRONT_HALF_M = 10.0  # half the width of such a front

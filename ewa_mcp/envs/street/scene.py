@@ -240,7 +240,7 @@ def compute_scene(world: World, graph: CityGraph, i: int, heading: float, label:
     return scene
 
 
-# The street's building fronts stand this far to either side (street_view.FACADE_X_M), and the lowest
+# The street's building fronts stand this far to either side (facades.FACADE_X_M), and the lowest
 # building drawn in front of a far tower is one storey (street_view.MIN_ROOF_M) above a 1.7 m eye.
 FRONTS_LATERAL_M = 11.0
 ROOF_OVER_EYE_M = 4.0 - 1.7
@@ -319,7 +319,7 @@ def describe(scene: Scene) -> str:
     return " ".join(parts)
 
 
-# The words of a description -> the details a facade is drawn with (street_view.draw_details): one table for the
+# The words of a description -> the details a facade is drawn with (facades.draw_details): one table for the
 # text's cues and the image's, so the two cannot drift apart.
 DETAIL_WORDS = {
     "lions": ("lion",), "clock": ("clock",), "dome": ("dome",), "statue": ("statue", "figure"),

@@ -293,15 +293,19 @@ def same_named(name: str) -> list[dict[str, Any]]:
 def listed_recipes(intent: str) -> list[dict[str, Any]]:
     """The recipes the intent's name matches, as the site lists them: every recipe of the dish's name, or,
     where the intent asks by a word of the name ('the dish whose name has the word "Salad"'), every recipe
-    whose name has the word. The constraints that tell them apart are not read."""
-    from ...envs.kitchen.taskgen.cooking import named_with
+    whose name has the word, or, where it asks by an ingredient ('the dish made with "Potato"'), every recipe
+    the site's ingredient filter lists for it. The constraints that tell them apart are not read."""
+    from ...envs.kitchen.taskgen.cooking import made_with, named_with
     from ...websites.recipes.catalog import load_catalog
 
     name = dish_of(intent)
     if name is not None:
         return same_named(name)
     m = re.match(r'Cook the dish whose name has the word "([^"]+)"', intent)
-    return named_with(m.group(1).lower(), load_catalog()) if m else []
+    if m:
+        return named_with(m.group(1).lower(), load_catalog())
+    m = re.match(r'Cook the dish made with "([^"]+)"', intent)
+    return made_with(m.group(1), load_catalog()) if m else []
 
 
 async def open_last_step(s: Session, recipe: dict[str, Any]) -> None:

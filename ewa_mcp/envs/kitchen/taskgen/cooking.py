@@ -3,8 +3,9 @@ follow it to its last step, then cook it in a kitchen that holds what it needs â
 missing food on the shop, for delivery to the kitchen, first.
 
 Three templates, each with its difficulty:
-  * cook (easy): one constraint (a name no other recipe has: asked by a word of it), every food in the kitchen;
-  * buy (medium): one constraint, one needed food missing and ordered for delivery;
+  * cook (easy): the recipe asked for by a word of its name that several recipes share (else an ingredient
+    several use) and the constraints that leave it alone among them, every food in the kitchen;
+  * buy (medium): the same, one needed food missing and ordered for delivery;
   * hard (by composition, issue 26): the recipe is told from its look-alike only by how one of its steps
     treats a food both use (cooked in the pan, toasted, kept raw; no search filter says it), or, where no
     step tells them apart, by two constraints that only together single it out; two needed foods are
@@ -15,6 +16,7 @@ Three templates, each with its difficulty:
 from __future__ import annotations
 
 import functools
+import itertools
 import re
 from typing import Any
 
@@ -101,12 +103,16 @@ def _name_word_constraints(recipe_id: str) -> tuple[str, list[tuple[str, dict[st
 
 def _find_name_word_constraints(recipe: dict[str, Any],
                                 catalog: Any) -> tuple[str, list[tuple[str, dict[str, Any]]]]:
-    """For a recipe whose name no other recipe has: a word of its name that the names of several recipes
-    share, and the constraints (one, else two together) that leave it alone among them; ("", []) when no
-    word does. Named outright, such a recipe needs no choosing: following the only recipe of that name,
-    step by step, was the task (issue 26, the look-alike agent scored there). Asked for by the word, the
-    agent must tell it from the other recipes of that word by the constraint."""
-    best: tuple[int, str, list[tuple[str, dict[str, Any]]]] = (0, "", [])
+    """A word of the recipe's name that the names of several recipes share, and the constraints (one, else
+    two together) that leave it alone among them; ("", []) when no word does. Named outright, a recipe
+    with a name of its own needs no choosing (following the only recipe of that name was the task), and
+    one with a same-named look-alike is a choice between two (issue 26: the look-alike and first-recipe
+    agents scored there). Asked for by the word, the agent must tell it from the other recipes of that
+    word by the constraint. A word whose search lists the target first is taken only where no other word
+    serves, and never for a recipe with a look-alike: there opening the first listed recipe would pass
+    every time, where its name leaves that a coin toss."""
+    paired = any(r["name"] == recipe["name"] and r["id"] != recipe["id"] for r in catalog.recipes)
+    best: tuple[tuple[bool, int], str, list[tuple[str, dict[str, Any]]]] = ((False, 0), "", [])
     for word in reversed(tokens(recipe["name"])):
         if word in NAME_WORD_SKIP or len(word) < 3:
             continue
@@ -123,15 +129,97 @@ def _find_name_word_constraints(recipe: dict[str, Any],
                     if merged is not None and [r["id"] for r in named_with(word, catalog, merged)] == [recipe["id"]]:
                         alone.append((f"{s1}. {s2}", merged))
         # The word most recipes share first (more to choose from), then one constraint over two.
-        rank = len(listed) * (2 if alone and ". " not in alone[0][0] else 1)
+        not_first = listed[0]["id"] != recipe["id"]
+        if paired and not not_first:
+            continue
+        rank = (not_first, len(listed) * (2 if alone and ". " not in alone[0][0] else 1))
         if alone and rank > best[0]:
             best = (rank, word, [(suffix, {**f, "q": word}) for suffix, f in alone])
     return best[1], best[2]
 
 
-def look_alikes(recipe: dict[str, Any], catalog: Any) -> list[dict[str, Any]]:
-    """The recipes a task for this one must be told from: those of its name, or, for a name no other recipe
-    has, those that share the word the intent asks by."""
+def made_with(ingredient: str, catalog: Any, filters: dict[str, Any] | None = None) -> list[dict[str, Any]]:
+    """The recipes the site lists for its ingredient filter (with the other filters), in listed order."""
+    merged = merge_filters({"include": [ingredient]}, filters or {}) or {}
+    return catalog.search(_filters("", merged))
+
+
+def ingredient_constraints(recipe: dict[str, Any], catalog: Any) -> tuple[str, list[tuple[str, dict[str, Any]]]]:
+    if catalog is load_catalog():
+        return _ingredient_constraints(recipe["id"])
+    return _find_ingredient_constraints(recipe, catalog)
+
+
+@functools.cache
+def _ingredient_constraints(recipe_id: str) -> tuple[str, list[tuple[str, dict[str, Any]]]]:
+    catalog = load_catalog()
+    return _find_ingredient_constraints(catalog.by_id[recipe_id], catalog)
+
+
+def _find_ingredient_constraints(recipe: dict[str, Any],
+                                 catalog: Any) -> tuple[str, list[tuple[str, dict[str, Any]]]]:
+    """For a recipe no word of whose name serves: an ingredient of it that the recipes of several names
+    use, whose list (the site's ingredient filter) does not show the target first, and the constraints
+    (one, else two together) that leave it alone among them; ("", []) when none does. The filters carry
+    the ingredient in ``include``."""
+    best: tuple[int, str, list[tuple[str, dict[str, Any]]]] = (0, "", [])
+    for ingredient in sorted({i["name"] for i in recipe["ingredients"]}):
+        listed = made_with(ingredient, catalog)
+        if len({r["name"] for r in listed}) < NAME_WORD_MIN_NAMES or listed[0]["id"] == recipe["id"]:
+            continue
+        others = [r for r in listed if r["id"] != recipe["id"]]
+        options = [(suffix, f) for suffix, f in constraint_options(recipe, catalog, others, wide=True)
+                   if f.get("include") != [ingredient]]
+        alone = [(suffix, f) for suffix, f in options
+                 if [r["id"] for r in made_with(ingredient, catalog, f)] == [recipe["id"]]]
+        if not alone:
+            for i, (s1, f1) in enumerate(options):
+                for s2, f2 in options[i + 1:]:
+                    merged = merge_filters(f1, f2)
+                    if merged is not None and [r["id"] for r in made_with(ingredient, catalog, merged)] == [recipe["id"]]:
+                        alone.append((f"{s1}. {s2}", merged))
+        rank = len(listed) * (2 if alone and ". " not in alone[0][0] else 1)
+        if alone and rank > best[0]:
+            best = (rank, ingredient, [(suffix, {"q": "", **(merge_filters({"include": [ingredient]}, f) or {})})
+                                       for suffix, f in alone])
+    return best[1], best[2]
+
+
+@functools.cache
+def _three_constraints_by_word(recipe_id: str) -> tuple[str, list[tuple[str, dict[str, Any]]]]:
+    """For a recipe with a same-named look-alike that neither a word of its name nor an ingredient serves
+    with one or two constraints: a word of its name whose list does not show it first, and three
+    constraints that together leave it alone among that word's recipes; ("", []) when none do. Named, it
+    would be a coin toss for an agent that opens the first listed recipe (the lower id of the pair)."""
+    catalog = load_catalog()
+    recipe = catalog.by_id[recipe_id]
+    for word in reversed(tokens(recipe["name"])):
+        if word in NAME_WORD_SKIP or len(word) < 3:
+            continue
+        listed = named_with(word, catalog)
+        if len({r["name"] for r in listed}) < NAME_WORD_MIN_NAMES or listed[0]["id"] == recipe["id"]:
+            continue
+        options = constraint_options(recipe, catalog, [r for r in listed if r["id"] != recipe["id"]], wide=True)
+        found: list[tuple[str, dict[str, Any]]] = []
+        for a, b, c in itertools.combinations(options, 3):
+            merged = merge_filters(a[1], b[1])
+            merged = merge_filters(merged, c[1]) if merged is not None else None
+            if merged is not None and [r["id"] for r in named_with(word, catalog, merged)] == [recipe["id"]]:
+                found.append((f"{a[0]}. {b[0]}. {c[0]}", {**merged, "q": word}))
+        if found:
+            return word, found
+    return "", []
+
+
+def look_alikes(recipe: dict[str, Any], catalog: Any, word: str | None = None,
+                ingredient: str | None = None) -> list[dict[str, Any]]:
+    """The recipes a task for this one must be told from: those that share the word the intent asks by
+    (``word``; its same-named look-alike among them), else those of its name, or, for a name no other
+    recipe has, those that share the word such a task asks by."""
+    if word:
+        return [r for r in named_with(word, catalog) if r["id"] != recipe["id"]]
+    if ingredient:
+        return [r for r in made_with(ingredient, catalog) if r["id"] != recipe["id"]]
     same = [r for r in catalog.recipes if r["name"] == recipe["name"] and r["id"] != recipe["id"]]
     if same:
         return same
@@ -140,14 +228,28 @@ def look_alikes(recipe: dict[str, Any], catalog: Any) -> list[dict[str, Any]]:
 
 
 def constraints_for(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dict[str, Any]]]:
-    """(intent suffix, search filters) pairs that leave exactly this recipe among those with its name; for
-    a name no other recipe has, among those whose name has a word of its name (the filters carry the word
-    as ``q``), or, where no word does, the name alone (nothing to choose; listed in docs/verified.md)."""
+    """(intent suffix, search filters) pairs for the one-constraint templates (cook, buy): those that leave
+    exactly this recipe among the recipes whose name has a word of its name (the filters carry the word as
+    ``q``); where no word is shared by enough names, those that leave it alone among the recipes of its
+    name, or, for a name no other recipe has, the name alone (nothing to choose; docs/verified.md).
+
+    Asked by its name, a recipe with one same-named look-alike was a choice between two: opening the first
+    listed and ignoring the constraint passed half of those tasks (issue 26, the first-recipe agent).
+    Among the several recipes of a word the first listed is seldom the one."""
     unique = sum(r["name"] == recipe["name"] for r in catalog.recipes) == 1
-    if unique:
-        _, by_word = name_word_constraints(recipe, catalog)
-        if by_word:
-            return by_word
+    word, by_word = name_word_constraints(recipe, catalog)
+    if by_word and named_with(word, catalog)[0]["id"] != recipe["id"]:
+        return by_word
+    # No word of the name serves (or its list shows the target first): ask by an ingredient instead.
+    _, by_ingredient = ingredient_constraints(recipe, catalog)
+    if by_ingredient:
+        return by_ingredient
+    if by_word:
+        return by_word
+    if not unique and catalog is load_catalog():
+        _, by_three = _three_constraints_by_word(recipe["id"])
+        if by_three:
+            return by_three
     good: list[tuple[str, dict[str, Any]]] = [("", {})] if unique else []
     good += [(suffix, f) for suffix, f in constraint_options(recipe, catalog) if singles_out(recipe, catalog, f)]
     return good
@@ -181,6 +283,39 @@ def two_constraints(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dic
                 pairs.append((int(alone[s1]) + int(alone[s2]), f"{s1}. {s2}", merged))
     pairs.sort(key=lambda item: item[0])  # stable: the options' own order within a rank
     return [(suffix, merged) for _, suffix, merged in pairs]
+
+
+def word_pairs(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dict[str, Any]]]:
+    """Hard: pairs of constraints that together leave a recipe with a look-alike alone among the recipes of a
+    word of its name (the filters carry the word as ``q``), pairs where neither constraint alone does first;
+    [] when no word serves. Named outright, the pair was a choice between two: opening the first listed
+    recipe passed about 44 % of hard tasks (issue 26, the first-recipe agent). A word whose search lists
+    the target first is never used."""
+    if recipe.get("pair_id") is None:
+        return []
+    for word in reversed(tokens(recipe["name"])):
+        if word in NAME_WORD_SKIP or len(word) < 3:
+            continue
+        listed = named_with(word, catalog)
+        if len({r["name"] for r in listed}) < NAME_WORD_MIN_NAMES or listed[0]["id"] == recipe["id"]:
+            continue
+        others = [r for r in listed if r["id"] != recipe["id"]]
+        options = constraint_options(recipe, catalog, others, wide=True)
+
+        def alone(f: dict[str, Any], word: str = word) -> bool:
+            return [r["id"] for r in named_with(word, catalog, f)] == [recipe["id"]]
+
+        single = {suffix: alone(f) for suffix, f in options}
+        pairs: list[tuple[int, str, dict[str, Any]]] = []
+        for i, (s1, f1) in enumerate(options):
+            for s2, f2 in options[i + 1:]:
+                merged = merge_filters(f1, f2)
+                if merged is not None and alone(merged):
+                    pairs.append((int(single[s1]) + int(single[s2]), f"{s1}. {s2}", {**merged, "q": word}))
+        if pairs:
+            pairs.sort(key=lambda item: item[0])  # stable: the options' own order within a rank
+            return [(suffix, merged) for _, suffix, merged in pairs]
+    return []
 
 
 def food_treatments(ops: list[dict[str, Any]]) -> dict[str, tuple[bool, str | None, str | None]]:
@@ -307,11 +442,13 @@ def needed_foods(ops: list[dict[str, Any]]) -> set[str]:
     return {PIECE_SOURCE.get(op.get("object", ""), op.get("object", "")) for op in ops} & FOODS
 
 
-def kitchen_goals(recipe: dict[str, Any], scene: str, buy: list[str]) -> list[Any]:
-    """The recipe's kitchen goals in this kitchen: its outcome, and what tells it from its look-alikes and
-    from doing everything (a food only a look-alike uses, when this kitchen has it, stays whole and raw)."""
+def kitchen_goals(recipe: dict[str, Any], scene: str, buy: list[str], word: str | None = None,
+                  ingredient: str | None = None) -> list[Any]:
+    """The recipe's kitchen goals in this kitchen: its outcome, and what tells it from its look-alikes (the
+    recipes of the word the intent asks by, when it does) and from doing everything (a food only a
+    look-alike uses, when this kitchen has it, stays whole and raw)."""
     ops = recipe_ops(recipe)
-    rivals = [recipe_ops(r) for r in look_alikes(recipe, load_catalog())]
+    rivals = [recipe_ops(r) for r in look_alikes(recipe, load_catalog(), word, ingredient)]
     present = scene_inventory(scene)["food"] | set(buy)
     return goals_from_ops(ops, [f for f in rival_foods(ops, rivals) if f in present])
 
@@ -335,11 +472,16 @@ def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str
     web = recipe_web_oracle(recipe, filters) if step is None else step_web_oracle(recipe)
     web_goals: list[Any] = [RecipeCompleted(recipe_id=recipe["id"])]
     word = filters.get("q")
+    # Asked by an ingredient: the filters' first include (the constraint may add another).
+    ingredient = filters["include"][0] if not word and "q" in filters else None
     if step is not None:
         intent = f"Cook {recipe['name']}. More than one recipe has that name: follow the one that {step}."
     elif word:
         intent = (f'Cook the dish whose name has the word "{word.capitalize()}" and that fits this: {suffix}. '
                   f'Several recipes have "{word.capitalize()}" in their name; only one fits.')
+    elif ingredient:
+        intent = (f'Cook the dish made with "{ingredient}" that fits this: {suffix}. '
+                  f'Several recipes use {ingredient}; only one fits.')
     else:
         intent = f"Cook {recipe['name']}." + (f" {suffix}." if suffix else "")
     if buy:
@@ -369,13 +511,15 @@ def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str
         start=StartState(environment="web", web=WebStart(start_url="recipes:/"),
                          embodied=KitchenStart(scene=scene)),
         web_goals=web_goals,
-        embodied_goals=kitchen_goals(recipe, scene, buy),
+        embodied_goals=kitchen_goals(recipe, scene, buy, word or None, ingredient),
         # The budget leaves room for an agent that reads every step (Next, Next, ...), which the oracle skips.
         step_limit=step_budget("cooking", DIFFICULTY[kind], len(oracle) + len(recipe["steps"])),
         oracle=oracle,
         metadata={"recipe_id": recipe["id"], "recipe_name": recipe["name"], "scene": scene,
                   "constraint": (None if step else suffix) or None, "telling_step": step,
                   "pair_id": recipe.get("pair_id"), "name_word": word or None,
+                  # only where asked by an ingredient: the other tasks' files stay as they were
+                  **({"ingredient": ingredient} if ingredient else {}),
                   "buy": (buy[0] if len(buy) == 1 else buy) if buy else None,
                   "kitchen_steps": steps["kitchen"], "not_kitchen_steps": steps["not_kitchen"]},
     )
@@ -399,9 +543,12 @@ def generate() -> list[Task]:
         scenes = [s for s in scenes if not missing_equipment(recipe, inventories[s])]
         # Hard: two constraints, two needed foods missing (replacing cook tasks, so the suite keeps its size).
         hard = 0
-        pairs = two_constraints(recipe, catalog)
-        # Told apart by a step where one is (the steps must be read); else by two constraints together.
+        # Told apart by a step where one is (the steps must be read); else by two constraints together, among
+        # the recipes of a word of its name where one serves (several to choose from, not a pair).
         step = telling_step(recipe, catalog)
+        pairs = two_constraints(recipe, catalog)
+        if step is None:
+            pairs = word_pairs(recipe, catalog) or pairs
         if pairs and len(foods) >= 2:
             for scene in scenes:
                 if hard >= HARD_PER_RECIPE:

@@ -123,7 +123,8 @@ def audit(tasks: list[Any], fresh_goals: bool = False) -> dict[str, Any]:
         buy = meta.get("buy") or []
         delivered = [buy] if isinstance(buy, str) else list(buy)
         scene = task.start.embodied.scene
-        goals = kitchen_goals(recipe, scene, delivered) if fresh_goals else task.embodied_goals
+        goals = (kitchen_goals(recipe, scene, delivered, meta.get("name_word"), meta.get("ingredient"))
+                 if fresh_goals else task.embodied_goals)
         counts["tasks"] += 1
         own = recipe_outcome(scene, recipe_ops(recipe), delivered)
         if own is None or not all(r.met for r in grade_kitchen(goals, own)):
