@@ -81,6 +81,12 @@ def test_installed_command_sees_every_task_and_plays_one(venv, tmp_path):
                    "--sample", "1", "--format", "json", "-q"], cwd=tmp_path)
     assert played.returncode == 0, played.stderr[-2000:]
     assert len(list((tmp_path / "runs").glob("*/*/final_state.json"))) == 1  # recorded under the cwd
+    # The same command into that run directory resumes it: the task already played is not played again.
+    run_dir = next((tmp_path / "runs").glob("*/*/final_state.json")).parent.parent
+    again = _run([str(venv / "bin" / "ewa-mcp"), "eval", "--agent", "oracle", "--domain", "geolocation",
+                  "--sample", "1", "--run-dir", str(run_dir), "--format", "json", "-q"], cwd=tmp_path)
+    assert again.returncode == 0, again.stderr[-2000:]
+    assert len(list(run_dir.glob("*/final_state.json"))) == 1
 
 
 def test_missing_task_store_is_an_error_naming_the_fix(venv, tmp_path):

@@ -290,6 +290,13 @@ def same_named(name: str) -> list[dict[str, Any]]:
     return [r for r in load_catalog().search(Filters(q=name)) if r["name"] == name]
 
 
+def cooking_task(s: Session) -> tuple[str, list[dict[str, Any]]]:
+    """The intent and the recipes the site lists for what it names ([] outside cooking)."""
+    seen = visible(s)
+    intent = str(seen.get("intent", ""))
+    return intent, listed_recipes(intent) if seen.get("domain") == "cooking" else []
+
+
 def listed_recipes(intent: str) -> list[dict[str, Any]]:
     """The recipes the intent's name matches, as the site lists them: every recipe of the dish's name, or,
     where the intent asks by a word of the name ('the dish whose name has the word "Salad"'), every recipe
@@ -350,9 +357,7 @@ class CookEverythingAgent:
     async def play(self, s: Session) -> None:
         from ...envs.kitchen.taskgen.outcomes import everything_ops, kitchen_calls, kitchen_foods
 
-        seen = visible(s)
-        intent = str(seen.get("intent", ""))
-        recipes = listed_recipes(intent) if seen.get("domain") == "cooking" else []
+        intent, recipes = cooking_task(s)
         if not recipes:
             return await finish(s)
         for recipe in recipes:
@@ -378,9 +383,7 @@ class LookAlikeAgent:
         from ...envs.kitchen.taskgen.outcomes import kitchen_calls
         from ...envs.kitchen.taskgen.recipe_goals import recipe_ops
 
-        seen = visible(s)
-        intent = str(seen.get("intent", ""))
-        recipes = listed_recipes(intent) if seen.get("domain") == "cooking" else []
+        intent, recipes = cooking_task(s)
         if not recipes:
             return await finish(s)
         recipe = recipes[0]
@@ -405,9 +408,7 @@ class FirstRecipeAgent:
         from ...envs.kitchen.taskgen.outcomes import kitchen_calls
         from ...envs.kitchen.taskgen.recipe_goals import recipe_ops
 
-        seen = visible(s)
-        intent = str(seen.get("intent", ""))
-        recipes = listed_recipes(intent) if seen.get("domain") == "cooking" else []
+        intent, recipes = cooking_task(s)
         if not recipes:
             return await finish(s)
         await open_last_step(s, recipes[0])

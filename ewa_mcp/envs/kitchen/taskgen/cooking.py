@@ -18,6 +18,7 @@ from __future__ import annotations
 import functools
 import itertools
 import re
+from collections.abc import Callable
 from typing import Any
 
 from ..planner import check_recipe_executable, plan_ops, scene_inventory
@@ -89,16 +90,18 @@ def named_with(word: str, catalog: Any, filters: dict[str, Any] | None = None) -
     return [r for r in catalog.search(_filters(word, filters or {})) if token_in(word, r["name"].lower())]
 
 
-def name_word_constraints(recipe: dict[str, Any], catalog: Any) -> tuple[str, list[tuple[str, dict[str, Any]]]]:
-    if catalog is load_catalog():
-        return _name_word_constraints(recipe["id"])
-    return _find_name_word_constraints(recipe, catalog)
+Asked = tuple[str, list[tuple[str, dict[str, Any]]]]  # what a recipe is asked by, and the constraints
 
 
-@functools.cache
-def _name_word_constraints(recipe_id: str) -> tuple[str, list[tuple[str, dict[str, Any]]]]:
-    catalog = load_catalog()
-    return _find_name_word_constraints(catalog.by_id[recipe_id], catalog)
+def _per_recipe(find: Callable[[dict[str, Any], Any], Asked]) -> Callable[[dict[str, Any], Any], Asked]:
+    """``find(recipe, catalog)``, cached per recipe for the shipped catalogue (the generator asks about each
+    recipe many times); any other catalogue (a test's) is searched afresh."""
+    cached = functools.cache(lambda recipe_id: find(load_catalog().by_id[recipe_id], load_catalog()))
+
+    def lookup(recipe: dict[str, Any], catalog: Any) -> Asked:
+        return cached(recipe["id"]) if catalog is load_catalog() else find(recipe, catalog)
+
+    return lookup
 
 
 def _find_name_word_constraints(recipe: dict[str, Any],
@@ -138,22 +141,13 @@ def _find_name_word_constraints(recipe: dict[str, Any],
     return best[1], best[2]
 
 
+name_word_constraints = _per_recipe(_find_name_word_constraints)
+
+
 def made_with(ingredient: str, catalog: Any, filters: dict[str, Any] | None = None) -> list[dict[str, Any]]:
     """The recipes the site lists for its ingredient filter (with the other filters), in listed order."""
     merged = merge_filters({"include": [ingredient]}, filters or {}) or {}
     return catalog.search(_filters("", merged))
-
-
-def ingredient_constraints(recipe: dict[str, Any], catalog: Any) -> tuple[str, list[tuple[str, dict[str, Any]]]]:
-    if catalog is load_catalog():
-        return _ingredient_constraints(recipe["id"])
-    return _find_ingredient_constraints(recipe, catalog)
-
-
-@functools.cache
-def _ingredient_constraints(recipe_id: str) -> tuple[str, list[tuple[str, dict[str, Any]]]]:
-    catalog = load_catalog()
-    return _find_ingredient_constraints(catalog.by_id[recipe_id], catalog)
 
 
 def _find_ingredient_constraints(recipe: dict[str, Any],
@@ -183,6 +177,9 @@ def _find_ingredient_constraints(recipe: dict[str, Any],
             best = (rank, ingredient, [(suffix, {"q": "", **(merge_filters({"include": [ingredient]}, f) or {})})
                                        for suffix, f in alone])
     return best[1], best[2]
+
+
+ingredient_constraints = _per_recipe(_find_ingredient_constraints)
 
 
 @functools.cache
