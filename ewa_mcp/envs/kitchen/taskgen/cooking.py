@@ -90,6 +90,22 @@ def named_with(word: str, catalog: Any, filters: dict[str, Any] | None = None) -
     return [r for r in catalog.search(_filters(word, filters or {})) if token_in(word, r["name"].lower())]
 
 
+def _one_else_two(options: list[tuple[str, dict[str, Any]]], lists: Callable[[dict[str, Any]], list[dict[str, Any]]],
+                  recipe_id: str) -> list[tuple[str, dict[str, Any]]]:
+    """The constraints, one, else two together, under which ``lists`` (a search) lists only the recipe."""
+    def alone(f: dict[str, Any]) -> bool:
+        return [r["id"] for r in lists(f)] == [recipe_id]
+
+    found = [(suffix, f) for suffix, f in options if alone(f)]
+    if not found:
+        for i, (s1, f1) in enumerate(options):
+            for s2, f2 in options[i + 1:]:
+                merged = merge_filters(f1, f2)
+                if merged is not None and alone(merged):
+                    found.append((f"{s1}. {s2}", merged))
+    return found
+
+
 Asked = tuple[str, list[tuple[str, dict[str, Any]]]]  # what a recipe is asked by, and the constraints
 
 
@@ -124,13 +140,7 @@ def _find_name_word_constraints(recipe: dict[str, Any],
             continue
         others = [r for r in listed if r["id"] != recipe["id"]]
         options = constraint_options(recipe, catalog, others, wide=True)
-        alone = [(suffix, f) for suffix, f in options if [r["id"] for r in named_with(word, catalog, f)] == [recipe["id"]]]
-        if not alone:
-            for i, (s1, f1) in enumerate(options):
-                for s2, f2 in options[i + 1:]:
-                    merged = merge_filters(f1, f2)
-                    if merged is not None and [r["id"] for r in named_with(word, catalog, merged)] == [recipe["id"]]:
-                        alone.append((f"{s1}. {s2}", merged))
+        alone = _one_else_two(options, lambda f, w=word: named_with(w, catalog, f), recipe["id"])
         # The word most recipes share first (more to choose from), then one constraint over two.
         not_first = listed[0]["id"] != recipe["id"]
         if paired and not not_first:
@@ -164,14 +174,7 @@ def _find_ingredient_constraints(recipe: dict[str, Any],
         others = [r for r in listed if r["id"] != recipe["id"]]
         options = [(suffix, f) for suffix, f in constraint_options(recipe, catalog, others, wide=True)
                    if f.get("include") != [ingredient]]
-        alone = [(suffix, f) for suffix, f in options
-                 if [r["id"] for r in made_with(ingredient, catalog, f)] == [recipe["id"]]]
-        if not alone:
-            for i, (s1, f1) in enumerate(options):
-                for s2, f2 in options[i + 1:]:
-                    merged = merge_filters(f1, f2)
-                    if merged is not None and [r["id"] for r in made_with(ingredient, catalog, merged)] == [recipe["id"]]:
-                        alone.append((f"{s1}. {s2}", merged))
+        alone = _one_else_two(options, lambda f, i=ingredient: made_with(i, catalog, f), recipe["id"])
         rank = len(listed) * (2 if alone and ". " not in alone[0][0] else 1)
         if alone and rank > best[0]:
             best = (rank, ingredient, [(suffix, {"q": "", **(merge_filters({"include": [ingredient]}, f) or {})})
