@@ -140,7 +140,7 @@ def _find_name_word_constraints(recipe: dict[str, Any],
             continue
         others = [r for r in listed if r["id"] != recipe["id"]]
         options = constraint_options(recipe, catalog, others, wide=True)
-        alone = _one_else_two(options, lambda f, w=word: named_with(w, catalog, f), recipe["id"])
+        alone = _one_else_two(options, functools.partial(named_with, word, catalog), recipe["id"])
         # The word most recipes share first (more to choose from), then one constraint over two.
         not_first = listed[0]["id"] != recipe["id"]
         if paired and not not_first:
@@ -174,7 +174,7 @@ def _find_ingredient_constraints(recipe: dict[str, Any],
         others = [r for r in listed if r["id"] != recipe["id"]]
         options = [(suffix, f) for suffix, f in constraint_options(recipe, catalog, others, wide=True)
                    if f.get("include") != [ingredient]]
-        alone = _one_else_two(options, lambda f, i=ingredient: made_with(i, catalog, f), recipe["id"])
+        alone = _one_else_two(options, functools.partial(made_with, ingredient, catalog), recipe["id"])
         rank = len(listed) * (2 if alone and ". " not in alone[0][0] else 1)
         if alone and rank > best[0]:
             best = (rank, ingredient, [(suffix, {"q": "", **(merge_filters({"include": [ingredient]}, f) or {})})
