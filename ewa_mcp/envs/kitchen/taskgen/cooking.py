@@ -18,7 +18,7 @@ from __future__ import annotations
 import functools
 import itertools
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from typing import Any
 
 from ..planner import check_recipe_executable, plan_ops, scene_inventory
@@ -185,6 +185,17 @@ def _find_ingredient_constraints(recipe: dict[str, Any],
 ingredient_constraints = _per_recipe(_find_ingredient_constraints)
 
 
+def _asking_words(recipe: dict[str, Any], catalog: Any) -> Iterator[tuple[str, list[dict[str, Any]]]]:
+    """The words of the recipe's name (last first) that a paired recipe can be asked by, with what a search for
+    each lists: words the names of several recipes share, whose list does not show the target first."""
+    for word in reversed(tokens(recipe["name"])):
+        if word in NAME_WORD_SKIP or len(word) < 3:
+            continue
+        listed = named_with(word, catalog)
+        if len({r["name"] for r in listed}) >= NAME_WORD_MIN_NAMES and listed[0]["id"] != recipe["id"]:
+            yield word, listed
+
+
 @functools.cache
 def _three_constraints_by_word(recipe_id: str) -> tuple[str, list[tuple[str, dict[str, Any]]]]:
     """For a recipe with a same-named look-alike that neither a word of its name nor an ingredient serves
@@ -193,12 +204,7 @@ def _three_constraints_by_word(recipe_id: str) -> tuple[str, list[tuple[str, dic
     would be a coin toss for an agent that opens the first listed recipe (the lower id of the pair)."""
     catalog = load_catalog()
     recipe = catalog.by_id[recipe_id]
-    for word in reversed(tokens(recipe["name"])):
-        if word in NAME_WORD_SKIP or len(word) < 3:
-            continue
-        listed = named_with(word, catalog)
-        if len({r["name"] for r in listed}) < NAME_WORD_MIN_NAMES or listed[0]["id"] == recipe["id"]:
-            continue
+    for word, listed in _asking_words(recipe, catalog):
         options = constraint_options(recipe, catalog, [r for r in listed if r["id"] != recipe["id"]], wide=True)
         found: list[tuple[str, dict[str, Any]]] = []
         for a, b, c in itertools.combinations(options, 3):
@@ -293,12 +299,7 @@ def word_pairs(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dict[str
     the target first is never used."""
     if recipe.get("pair_id") is None:
         return []
-    for word in reversed(tokens(recipe["name"])):
-        if word in NAME_WORD_SKIP or len(word) < 3:
-            continue
-        listed = named_with(word, catalog)
-        if len({r["name"] for r in listed}) < NAME_WORD_MIN_NAMES or listed[0]["id"] == recipe["id"]:
-            continue
+    for word, listed in _asking_words(recipe, catalog):
         others = [r for r in listed if r["id"] != recipe["id"]]
         options = constraint_options(recipe, catalog, others, wide=True)
 
