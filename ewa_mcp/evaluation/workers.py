@@ -11,6 +11,10 @@ Nothing outlives the driver (lifeline.py): a SIGTERM or SIGHUP to the driver sto
 after its workers are stopped and the staging folder removed; each worker dies with the driver even when the
 driver is SIGKILLed (the kernel's parent-death signal), killing its Playwright driver, browser and renderers and
 removing its staging folder first.
+
+Each worker reports on a pipe of its own, never on a queue shared with the others: a process that dies in the
+middle of a write (os._exit, SIGKILL, the OOM killer) can leave a shared queue's write lock held forever, and
+every other worker, and so the whole run, would hang behind it. A torn pipe only ends its own worker's reports.
 """
 
 from __future__ import annotations
@@ -18,13 +22,13 @@ from __future__ import annotations
 import multiprocessing as mp
 import os
 import pickle
-import queue
 import shutil
 import signal
 import sys
 import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
+from multiprocessing.connection import Connection, wait
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
@@ -58,10 +62,24 @@ def check_picklable(agent: Any, where: str) -> bytes:
                         "this process (--workers 1)") from exc
 
 
+class _Reports:
+    """A worker's end of its pipe to the driver; its episode threads take turns to write."""
+
+    def __init__(self, conn: Connection):
+        self.conn = conn
+        self.lock = threading.Lock()
+
+    def put(self, message: tuple) -> None:
+        with self.lock:
+            self.conn.send(message)
+
+
 def _worker_main(wid: int, agent_blob: bytes, transport: str, task_dirs: list[Path], staging: Path,
-                 concurrency: int, inbox: Any, outbox: Any, parent_pid: int | None = None) -> None:
+                 concurrency: int, inbox: Any, report_end: Connection, parent_pid: int | None = None) -> None:
     """A worker process: one episode player, up to `concurrency` episodes at once, until it gets None."""
     import logging
+
+    outbox = _Reports(report_end)
 
     from .lifeline import bind_to_parent
     from .player import EpisodePlayer
@@ -99,6 +117,7 @@ class _Worker:
     wid: int
     process: Any
     inbox: Any
+    reports: Connection  # the driver's (reading) end of the worker's pipe
     staging: Path
     ready: bool = False
     stopping: bool = False
@@ -114,7 +133,6 @@ class _Driver:
         self.size, self.concurrency = workers, max(1, concurrency)
         self.agent_blob = check_picklable(agent, "worker processes")
         self.ctx = mp.get_context("spawn")  # a fork of a process with threads (the sites, Playwright) is unsafe
-        self.outbox = self.ctx.Queue()
         self.ledger = Ledger(tasks, max_attempts=max_attempts)
         self.workers: dict[int, _Worker] = {}
         self.started = 0
@@ -129,11 +147,13 @@ class _Driver:
         self.started += 1
         staging = self.staging_root / f"w{wid}"
         inbox = self.ctx.Queue()
+        reports, report_end = self.ctx.Pipe(duplex=False)
         process = self.ctx.Process(target=_worker_main, name=f"ewa-eval-w{wid}", daemon=True,
                                    args=(wid, self.agent_blob, self.transport, self.task_dirs, staging,
-                                         self.concurrency, inbox, self.outbox, os.getpid()))
+                                         self.concurrency, inbox, report_end, os.getpid()))
         process.start()
-        self.workers[wid] = _Worker(wid, process, inbox, staging)
+        report_end.close()  # the worker holds the only writing end: its death reads as the end of the pipe
+        self.workers[wid] = _Worker(wid, process, inbox, reports, staging)
 
     def feed(self, worker: _Worker) -> None:
         # One task more than the worker plays at once waits in its queue, so a worker that finishes an episode
@@ -189,22 +209,41 @@ class _Driver:
                 os.rename(source, self.run_dir / episode_id)
         worker.deferred.clear()
 
-    def drain(self) -> None:
-        while True:
-            try:
-                self.handle(self.outbox.get_nowait())
-            except queue.Empty:
-                return
+    def receive(self, timeout: float) -> None:
+        """Handle what the workers sent within timeout seconds."""
+        live = {w.reports: w for w in self.workers.values() if not w.reports.closed}
+        if not live:  # every pipe has ended: only check_deaths has news
+            time.sleep(timeout)
+            return
+        for conn in wait(list(live), timeout=timeout):
+            self.read(live[conn])  # type: ignore[index]
+
+    def read(self, worker: _Worker) -> None:
+        """One report from worker; a pipe whose writer is gone (or that broke mid-report) is closed."""
+        try:
+            message = worker.reports.recv()
+        except (EOFError, OSError, pickle.UnpicklingError):
+            worker.reports.close()
+            return
+        self.handle(message)
+
+    def drain(self, worker: _Worker) -> None:
+        """Everything worker sent before it died."""
+        while not worker.reports.closed and worker.reports.poll():
+            self.read(worker)
 
     def check_deaths(self) -> None:
         dead = [w for w in self.workers.values() if not w.stopping and w.process.exitcode is not None]
         if not dead:
             return
-        self.drain()  # what a worker sent before it died counts
+        for worker in dead:
+            self.drain(worker)  # what a worker sent before it died counts
         for worker in dead:
             code = worker.process.exitcode
             reason = f"worker process {worker.process.pid} exited with code {code}"
             del self.workers[worker.wid]
+            if not worker.reports.closed:
+                worker.reports.close()
             self.land_deferred(worker)  # accepted outcomes keep their (unfinished) records
             shutil.rmtree(worker.staging, ignore_errors=True)  # the unfinished episodes: played again
             for outcome in self.ledger.lost(worker.wid, reason):
@@ -235,10 +274,7 @@ class _Driver:
             for _ in range(min(self.size, len(self.tasks)) or 1):
                 self.spawn()
             while not self.ledger.complete:
-                try:
-                    self.handle(self.outbox.get(timeout=0.5))
-                except queue.Empty:
-                    pass
+                self.receive(timeout=0.5)
                 self.check_deaths()
             self.stop()
         except RecordStop:
