@@ -237,6 +237,29 @@ def test_a_waypoint_must_be_passed_before_the_walk_ends(tmp_path: Path) -> None:
     assert run(None).conditions[1].met is None
 
 
+def test_an_ordered_waypoint_must_be_passed_after_the_one_before_it(tmp_path: Path) -> None:
+    first = offset_north(GOAL["lat"], GOAL["lng"], -400)
+    second = offset_north(GOAL["lat"], GOAL["lng"], -200)
+    goal = {"kind": "passed_place", "city": "manhattan", "node": "n-second", "lat": second[0], "lng": second[1],
+            "place_id": "second", "after": {"node": "n-first", "lat": first[0], "lng": first[1], "place_id": "first"}}
+    far = offset_north(GOAL["lat"], GOAL["lng"], 300)
+
+    def met(*points: tuple[float, float]) -> Any:
+        state = {**street_state(GOAL["lat"], GOAL["lng"]), "path_points": [list(p) for p in points]}
+        task = street_task()
+        task["embodied_goals"].append(goal)
+        return grade_episode(EpisodeBuilder(tmp_path, task).finish(embodied=state).directory).conditions[1]
+
+    goal_point = (GOAL["lat"], GOAL["lng"])
+    assert met(first, second, goal_point).met is True
+    # passing the second stop on the way to the first, then again after it, keeps the order
+    assert met(second, first, second, goal_point).met is True
+    wrong = met(far, second, first, goal_point)
+    assert wrong.met is False and "only before it passed first" in wrong.note and wrong.detail["in_order"] is False
+    never = met(second, goal_point)
+    assert never.met is False and "never passed first" in never.note
+
+
 def test_exact_node_distance_and_spl(tmp_path: Path) -> None:
     at_goal = street_state(GOAL["lat"], GOAL["lng"], node="n-goal", walked=125.0)
     nav = _street(tmp_path, at_goal, metadata={"shortest_path_m": 100.0}).navigation[0]

@@ -3,7 +3,8 @@
 Shopping (played through the real server, Chromium and street graph, graded from the run directory): the
 oracle of a budget task passes; ordering both items at the nearest store that has them (ignoring the budget)
 fails, and so does ordering at the right store but walking to that nearer one. Navigation (the same way):
-three stops in the wiki's order pass; the same walk in the order the intent lists them fails. Cooking (graded offline with
+three stops in the wiki's order pass; the same walk in the order the intent lists them fails, and so does
+the right last stop after the first two in the other order. Cooking (graded offline with
 the kitchen's own checks on real simulator outcomes): a recipe told apart only by a step passes with its own
 steps and fails with its look-alike's, and its intent names no missing food although two must be ordered.
 """
@@ -143,11 +144,21 @@ def test_stops_in_the_intents_order_fail_and_in_the_wikis_order_pass(store, tmp_
     meta = task.metadata
     assert play(task, tmp_path, "oracle-stops")
     origin = world.places.get(meta["origin_id"]) or world.place(meta["origin_id"])
-    stops = [origin, *(world.places[p] for p in meta["listed"])]
-    nodes = [origin.node]
-    for a, b in zip(stops, stops[1:]):
-        nodes += world.directions(a.id, b.id).nodes[1:]
-    walk = [c for c in task.oracle if c.tool not in ("street_move", "street_stop", "finish_episode")]
-    walk += [ToolCall(tool="street_move", args={"neighbour": n}) for n in nodes[1:]]
-    walk += [ToolCall(tool="street_stop", args={}), ToolCall(tool="finish_episode", args={})]
-    assert not play(task.model_copy(update={"oracle": walk}), tmp_path, "listed-order")
+
+    def walking(order: list[str]) -> Task:
+        stops = [origin, *(world.places[p] for p in order)]
+        nodes = [origin.node]
+        for a, b in zip(stops, stops[1:]):
+            nodes += world.directions(a.id, b.id).nodes[1:]
+        walk = [c for c in task.oracle if c.tool not in ("street_move", "street_stop", "finish_episode")]
+        walk += [ToolCall(tool="street_move", args={"neighbour": n}) for n in nodes[1:]]
+        walk += [ToolCall(tool="street_stop", args={}), ToolCall(tool="finish_episode", args={})]
+        return task.model_copy(update={"oracle": walk})
+
+    assert not play(walking(meta["listed"]), tmp_path, "listed-order")
+    # the right last stop, the first two swapped: the order of passing is graded too, unless the second
+    # stop also lies on the way from the first to the last
+    oldest, middle, newest = meta["stops"]
+    swapped = walking([middle, oldest, newest])
+    passes_again = world.places[middle].node in world.directions(oldest, newest).nodes
+    assert passes_again or not play(swapped, tmp_path, "first-two-swapped")

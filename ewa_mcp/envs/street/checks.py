@@ -67,15 +67,29 @@ def check_passed_place(goal: PassedPlace, state: dict[str, Any], radius_override
     if not isinstance(points, list):
         return ConditionResult(side="embodied", kind=goal.kind, description=description, met=None,
                                note="the final state has no path_points, so the walk's course is unknown")
-    distances = [haversine_m(lat, lng, goal.lat, goal.lng) for lat, lng in
-                 ((_number(p[0]), _number(p[1])) for p in points if isinstance(p, list | tuple) and len(p) == 2)
-                 if lat is not None and lng is not None]
+    track = [(lat, lng) for lat, lng in
+             ((_number(p[0]), _number(p[1])) for p in points if isinstance(p, list | tuple) and len(p) == 2)
+             if lat is not None and lng is not None]
+    distances = [haversine_m(lat, lng, goal.lat, goal.lng) for lat, lng in track]
     closest = min(distances) if distances else None
     met = closest is not None and closest <= radius
     note = None if met else ("the walk has no positions" if closest is None else
                              f"the walk came no closer than {closest:.0f} m to the waypoint (radius {radius:g} m)")
+    detail: dict[str, Any] = {"closest_m": round(closest, 2) if closest is not None else None}
+    if goal.after is not None:
+        before = goal.after.place_id or goal.after.node
+        description += f" after passing {before}"
+        first = next((i for i, (lat, lng) in enumerate(track)
+                      if haversine_m(lat, lng, goal.after.lat, goal.after.lng) <= radius), None)
+        last = max((i for i, d in enumerate(distances) if d <= radius), default=None)
+        in_order = first is not None and last is not None and last >= first
+        detail["in_order"] = in_order
+        if met and not in_order:
+            met = False
+            note = (f"the walk never passed {before}" if first is None else
+                    f"the walk passed here only before it passed {before}: the task gives the other order")
     return ConditionResult(side="embodied", kind=goal.kind, description=description, met=met,
-                           detail={"closest_m": round(closest, 2) if closest is not None else None}, note=note)
+                           detail=detail, note=note)
 
 
 def check_reached_place(

@@ -36,7 +36,19 @@ class ReachedPlace(_StreetTarget):
     must_match_order_store: bool = False
 
 
+class Waypoint(StrictModel):
+    """A point a walk must have passed earlier (``PassedPlace.after``)."""
+
+    node: str
+    lat: float
+    lng: float
+    place_id: str | None = None
+
+
 class PassedPlace(_StreetTarget):
-    """Embodied (street): the walk passed within ``radius_m`` of a waypoint before it ended."""
+    """Embodied (street): the walk passed within ``radius_m`` of a waypoint before it ended, and, with
+    ``after``, passed it at some moment after it had passed ``after`` (the order of stops the task gives).
+    Passing it earlier too does not count against the walk: a stop may lie on the way to the one before it."""
 
     kind: Literal["passed_place"] = "passed_place"
+    after: Waypoint | None = None

@@ -15,7 +15,7 @@ from ewa_mcp.geometry import haversine_m
 from ..world import get_world
 from ewa_mcp.core.taskmodel import StartState, Task
 from ewa_mcp.envs.browser.goals import DirectionsShown, PageVisited, WebStart
-from ewa_mcp.envs.street.goals import PassedPlace, ReachedPlace, StreetStart
+from ewa_mcp.envs.street.goals import PassedPlace, ReachedPlace, StreetStart, Waypoint
 from ewa_mcp.websites.map.places import WorldAdapter
 from ewa_mcp.websites.wiki import store as wiki
 from ewa_mcp.taskgen.common import WALK_RULE, call, rng_for, site_url, step_budget
@@ -175,7 +175,9 @@ def stops_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any]
             start=start_state(world, city, origin, task_rng),
             web_goals=[PageVisited(site="wiki", path_prefix=f"/wiki/{article_slug(p)}") for p in order],
             embodied_goals=[*[PassedPlace(city=city, node=p.node, lat=world.node(p.node).lat,
-                                          lng=world.node(p.node).lng, place_id=p.id) for p in order[:-1]],
+                                          lng=world.node(p.node).lng, place_id=p.id,
+                                          after=waypoint(world, order[k - 1]) if k else None)
+                              for k, p in enumerate(order[:-1])],
                             reached(world, city, order[-1])],
             step_limit=step_budget("navigation", "hard", len(oracle)),
             oracle=oracle,
@@ -186,6 +188,11 @@ def stops_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any]
                       "listed": [p.id for p in listed], "years": years, "origin_id": origin.id},
         ))
     return tasks
+
+
+def waypoint(world: Any, place: Any) -> Waypoint:
+    node = world.node(place.node)
+    return Waypoint(node=place.node, lat=node.lat, lng=node.lng, place_id=place.id)
 
 
 def nearest_first(world: Any, origin: Any, stops: list[Any]) -> str:
