@@ -69,7 +69,8 @@ def test_hard_traveling_needs_two_hops_and_the_range_together() -> None:
         sharing = [p for p in peers if p.id != via.id and cue_value(cue["key"], p) == cue["value"]]
         assert sharing, task["id"]  # the fact alone does not single it out, even with X set aside
         assert all(walk_m(world, start, p.node) > cue["range_m"] + 100 for p in sharing), task["id"]
-        near = [p for p in peers if p.id != via.id and walk_m(world, start, p.node) <= cue["range_m"] + 100]
+        near = [p for p in world.places.values() if p.city == place.city and p.id not in (place.id, via.id)
+                and wiki.by_poi_id(p.id) is not None and walk_m(world, start, p.node) <= cue["range_m"] + 100]
         assert not any(cue_value(cue["key"], p) and _alike(cue["key"], cue["value"], cue_value(cue["key"], p))
                        for p in near), task["id"]  # nothing in range could be read as sharing it
         assert any(walk_m(world, start, p.node) < cue["range_m"] for p in peers), task["id"]  # nor the range

@@ -260,11 +260,15 @@ def cue_task(world: Any, target: Any, rng: Any) -> tuple[str, str, Any, Any, Any
     landmarks besides the target and X share it too, every one of them more than RANGE_MARGIN_M beyond the
     range (X may stand anywhere: the intent names it, so it is never the answer). The range alone does not
     single the target out (another landmark with an article stands within it), and no landmark within the
-    range has a value that could be read as the same one. Nothing names the answer in one read: the target's
+    range (no place with an article, a station included) has a value that could be read as the same one. Nothing names the answer in one read: the target's
     article does not name X, X's article does not name the target, and the value's own article (the style's,
     the architect's) names none or several of the city's landmarks sharing it, never the target alone."""
     peers = [p for p in landmarks_of(world) if p.city == target.city and p.id != target.id
              and wiki.by_poi_id(p.id) is not None]
+    # Every other place of the city whose article could give the fact (a station's too): none in range may
+    # read as sharing it.
+    with_articles = sorted((p for p in world.places.values() if p.city == target.city and p.id != target.id
+                            and wiki.by_poi_id(p.id) is not None), key=lambda p: p.id)
     target_text = article_text(wiki.by_poi_id(target.id))
     keys = [k for k in CUES if k in target.facts]
     rng.shuffle(keys)
@@ -284,7 +288,7 @@ def cue_task(world: Any, target: Any, rng: Any) -> tuple[str, str, Any, Any, Any
                 and not names_place(wiki.by_poi_id(x.id).title, target)]
         if not vias:
             continue
-        alike = [p for p in peers if (v := cue_value(key, p)) is not None and _alike(key, value, v)]
+        alike = [p for p in with_articles if (v := cue_value(key, p)) is not None and _alike(key, value, v)]
         for start, route in near_starts(world, target, rng)[:30]:
             limit = int(-(-(route.distance_m + 60) // 100) * 100)  # rounded up, 60 m clear of the walk
             walks: dict[str, float] = {}
