@@ -213,6 +213,14 @@ def _alike(key: str, a: str, b: str) -> bool:
     return bool({t for t in tokens(a) if t not in _GENERIC} & {t for t in tokens(b) if t not in _GENERIC})
 
 
+def article_of(place: Any) -> Any:
+    """The wiki article of a landmark that has one (every landmark a hard task names or targets)."""
+    article = wiki.by_poi_id(place.id)
+    if article is None:
+        raise ValueError(f"{place.id} has no wiki article; a hard traveling task names only landmarks with one")
+    return article
+
+
 def names_of_place(place: Any) -> list[str]:
     """Every name an article could give the landmark: its place name, its article's title and aliases."""
     article = wiki.by_poi_id(place.id)
@@ -285,7 +293,7 @@ def cue_task(world: Any, target: Any, rng: Any) -> tuple[str, str, Any, Any, Any
             continue  # the wiki must state the fact of the landmark and of those sharing it
         vias = [x for x in sharing if not names_place(target_text, x)
                 and not names_place(article_text(wiki.by_poi_id(x.id)), target)
-                and not names_place(wiki.by_poi_id(x.id).title, target)]
+                and not names_place(article_of(x).title, target)]
         if not vias:
             continue
         alike = [p for p in with_articles if (v := cue_value(key, p)) is not None and _alike(key, value, v)]
@@ -328,7 +336,7 @@ def landmark_task(world: Any, tid: str, target: Any, article: Any, question_key:
     if cue is not None:
         key, value, via, limit = cue
         city = world.city(target.city).name.split(" (")[0]
-        x = wiki.by_poi_id(via.id).title
+        x = article_of(via).title
         intent = (f"You are at the corner of {corner} in {city}. Of the landmarks within about {limit} m of this "
                   f"corner on foot, exactly one other than {x} {CUES[key].format(x=x)}, as their wiki articles "
                   f"give {CUE_LABEL[key]}; other landmarks of the city share it too, farther away. Find it: "
@@ -348,7 +356,7 @@ def landmark_task(world: Any, tid: str, target: Any, article: Any, question_key:
                   + answer_rule(FORMS[question_key]))
     end = world.node(target.node)
     oracle = [
-        *([call("browser_goto", url=site_url("wiki", f"/wiki/{wiki.by_poi_id(cue[2].id).slug}"))] if cue else []),
+        *([call("browser_goto", url=site_url("wiki", f"/wiki/{article_of(cue[2]).slug}"))] if cue else []),
         call("browser_goto", url=site_url("map", "/directions", **{"from": start.id, "to": target.id})),
         call("switch_environment", target="embodied", message="walk to the landmark"),
         *[call("street_move", neighbour=n) for n in route.nodes[1:]], call("street_stop"),
@@ -374,7 +382,7 @@ def landmark_task(world: Any, tid: str, target: Any, article: Any, question_key:
         metadata={"poi_id": target.id, "article": article.slug, "question": question_key,
                   "shortest_path_m": route.distance_m, "start_lat": world.node(start.node).lat,
                   "start_lng": world.node(start.node).lng, "visual_only": hard and cue is None,
-                  "cue": {"key": cue[0], "value": cue[1], "via": cue[2].id, "via_article": wiki.by_poi_id(cue[2].id).slug,
+                  "cue": {"key": cue[0], "value": cue[1], "via": cue[2].id, "via_article": article_of(cue[2]).slug,
                           "range_m": cue[3]} if cue else None},
     )
 
