@@ -42,28 +42,37 @@ def walk_m(world, start: str, node: str) -> float:
         return float("inf")
 
 
-def test_hard_traveling_needs_the_wiki_fact_and_the_range_together() -> None:
-    """Hard by composition (issue 26, principle 6): no address or name; the landmark is the only one within
-    the stated walk of the corner that has the stated wiki fact, while another landmark of its city has the
-    fact (farther away) and another landmark stands within the range: neither cue alone singles it out."""
-    from ewa_mcp.envs.street.taskgen.traveling import _fact_text, landmarks_of
+def test_hard_traveling_needs_two_hops_and_the_range_together() -> None:
+    """Hard by composition (issue 26, principle 6): no address or name and no stated fact; the landmark shares
+    a fact with a named landmark X (whose article gives it), at least one more landmark of its city shares it
+    (farther away), another landmark stands within the range, and X is never the answer."""
+    from ewa_mcp.envs.street.taskgen.traveling import _alike, cue_value, landmarks_of
 
     world = get_world()
     hard = [t for t in suite("traveling") if t["difficulty"] == "hard"]
     assert len(hard) >= 25
+    assert len({t["metadata"]["cue"]["key"] for t in hard}) >= 2  # more than one kind of shared fact
     for task in hard:
         place = world.places[task["metadata"]["poi_id"]]
         article = wiki.by_poi_id(place.id)
         for giveaway in (place.address, place.name, article.title, *article.aliases, place.description_hint):
             assert not contains_phrase(task["intent"], giveaway), (task["id"], giveaway)  # as words: "UN" ≠ "counts"
         cue, start = task["metadata"]["cue"], task["start"]["embodied"]["node"]
-        assert cue["value"] in task["intent"] and f"within about {cue['range_m']} m" in task["intent"], task["id"]
+        via = world.places[cue["via"]]
+        assert wiki.by_poi_id(via.id).title in task["intent"] and f"within about {cue['range_m']} m" in task["intent"]
+        assert not contains_phrase(task["intent"], cue["value"]), task["id"]  # the fact is read from X's article
         assert cue["key"] != task["metadata"]["question"], task["id"]
+        assert via.city == place.city and via.id != place.id and cue_value(cue["key"], via) == cue["value"]
+        assert cue_value(cue["key"], place) == cue["value"], task["id"]
         peers = [p for p in landmarks_of(world) if p.city == place.city and p.id != place.id
                  and wiki.by_poi_id(p.id) is not None]
-        sharing = [p for p in peers if cue["key"] in p.facts and _fact_text(cue["key"], p.facts[cue["key"]]) == cue["value"]]
-        assert sharing, task["id"]  # the fact alone does not single it out
+        sharing = [p for p in peers if p.id != via.id and cue_value(cue["key"], p) == cue["value"]]
+        assert sharing, task["id"]  # the fact alone does not single it out, even with X set aside
         assert all(walk_m(world, start, p.node) > cue["range_m"] + 100 for p in sharing), task["id"]
+        near = [p for p in world.places.values() if p.city == place.city and p.id not in (place.id, via.id)
+                and wiki.by_poi_id(p.id) is not None and walk_m(world, start, p.node) <= cue["range_m"] + 100]
+        assert not any(cue_value(cue["key"], p) and _alike(cue["key"], cue["value"], cue_value(cue["key"], p))
+                       for p in near), task["id"]  # nothing in range could be read as sharing it
         assert any(walk_m(world, start, p.node) < cue["range_m"] for p in peers), task["id"]  # nor the range
         assert walk_m(world, start, place.node) <= cue["range_m"] - 50, task["id"]
 

@@ -173,14 +173,73 @@ def start_place(world: Any, target: Any, rng: Any, max_m: float = MAX_M) -> tupl
     return None
 
 
-# Hard tasks name the landmark by a wiki fact it shares with other landmarks of its city, and a walking range
-# from the corner that holds other landmarks: only the two together single it out (issue 26, principle 6).
-CUES = {"architectural_style": "is in the {v} style", "year_built": "was built in {v}",
-        "architect": "was designed by {v}"}
-CUE_LABEL = {"architectural_style": "its architectural style", "year_built": "the year it was built",
-             "architect": "its architect"}
-RANGE_MARGIN_M = 150.0
-CUE_MAX_M = 900.0  # the walk from the corner (the range holds other landmarks, so it is wider than by sight)  # a landmark sharing the fact lies this much beyond the range, at least
+# Hard tasks name the landmark in two hops (issue 26, principle 6): by a wiki fact it shares with another
+# named landmark X of its city ("the same architectural style as X", "built in the same decade as X", "designed
+# by the architect of X"), and a walking range from the corner. The agent reads X's article for the fact, finds
+# the landmarks sharing it (several do, the others beyond the range), and measures the walks to pick the one in
+# range: no single search or single walk answers it.
+CUES = {"architectural_style": "has the same architectural style as {x}",
+        "year_built": "was built in the same decade as {x}",
+        "architect": "was designed by the same architect as {x}"}
+CUE_LABEL = {"architectural_style": "their architectural style",
+             "year_built": "the year each was built (a decade is 1920 to 1929, and so on)",
+             "architect": "their architect"}
+RANGE_MARGIN_M = 150.0  # every other landmark sharing the fact lies this much beyond the range, at least
+CUE_MAX_M = 900.0  # the walk from the corner (the range holds other landmarks, so it is wider than by sight)
+MIN_SHARING = 1  # landmarks sharing the fact besides the target and X: the fact alone never singles it out
+# Words that do not make two style or architect names alike ("Greek Revival" and "Gothic Revival" differ).
+_GENERIC = {"revival", "architecture", "style", "and", "the", "of", "with", "base", "tower", "co", "company",
+            "partners", "associates", "studio", "workshop"}
+
+
+def cue_value(key: str, place: Any) -> str | None:
+    """The value two landmarks must share for ``key``: the style or architect as the wiki gives it, or the
+    decade of the year built ("1920s")."""
+    if key not in place.facts:
+        return None
+    if key == "year_built":
+        try:
+            return f"{int(str(place.facts[key]).strip()) // 10 * 10}s"
+        except ValueError:
+            return None
+    return _fact_text(key, place.facts[key]) or None
+
+
+def _alike(key: str, a: str, b: str) -> bool:
+    """Whether two values could be read as the same one (they share a distinctive word: "International Style"
+    and "International Style / Modernism", "Charles McKim" and "McKim, Mead & White"). Decades are exact."""
+    if key == "year_built":
+        return a == b
+    return bool({t for t in tokens(a) if t not in _GENERIC} & {t for t in tokens(b) if t not in _GENERIC})
+
+
+def article_of(place: Any) -> Any:
+    """The wiki article of a landmark that has one (every landmark a hard task names or targets)."""
+    article = wiki.by_poi_id(place.id)
+    if article is None:
+        raise ValueError(f"{place.id} has no wiki article; a hard traveling task names only landmarks with one")
+    return article
+
+
+def names_of_place(place: Any) -> list[str]:
+    """Every name an article could give the landmark: its place name, its article's title and aliases."""
+    article = wiki.by_poi_id(place.id)
+    names = [place.name, *([article.title, *article.aliases] if article is not None else [])]
+    return [n for n in dict.fromkeys(names) if len(tokens(n)) >= 1]
+
+
+def names_place(text: str, place: Any) -> bool:
+    return any(contains_phrase(text, n) for n in names_of_place(place))
+
+
+def concept_articles(key: str, value: str) -> list[Any]:
+    """The wiki's articles about a shared value itself (the style's or the architect's article): the pages
+    a search for the fact opens first."""
+    if key == "year_built":
+        return []
+    found = [wiki.find(value), *(wiki.find(a) for a in names_of(key, value)[0])]
+    out: dict[str, Any] = {a.slug: a for a in found if a is not None and a.group in ("architecture", "architects")}
+    return list(out.values())
 
 
 def near_starts(world: Any, target: Any, rng: Any) -> list[tuple[Any, Any]]:
@@ -202,54 +261,87 @@ def near_starts(world: Any, target: Any, rng: Any) -> list[tuple[Any, Any]]:
     return out
 
 
-def cue_task(world: Any, target: Any, rng: Any) -> tuple[str, str, Any, Any, int] | None:
-    """(cue key, cue value, start, route, range in m) for a hard task about ``target``, or None.
+def cue_task(world: Any, target: Any, rng: Any) -> tuple[str, str, Any, Any, Any, int] | None:
+    """(cue key, shared value, X, start, route, range in m) for a hard task about ``target``, or None.
 
-    The fact alone does not single the landmark out (another landmark of the city shares it); the range
-    alone does not (another landmark with an article stands within it); together they do, with margins
-    (every other landmark sharing the fact is RANGE_MARGIN_M beyond the range)."""
+    Two hops: X is another landmark of the city whose article gives the shared value; at least MIN_SHARING
+    landmarks besides the target and X share it too, every one of them more than RANGE_MARGIN_M beyond the
+    range (X may stand anywhere: the intent names it, so it is never the answer). The range alone does not
+    single the target out (another landmark with an article stands within it), and no landmark within the
+    range (no place with an article, a station included) has a value that could be read as the same one. Nothing names the answer in one read: the target's
+    article does not name X, X's article does not name the target, and the value's own article (the style's,
+    the architect's) names none or several of the city's landmarks sharing it, never the target alone."""
     peers = [p for p in landmarks_of(world) if p.city == target.city and p.id != target.id
              and wiki.by_poi_id(p.id) is not None]
+    # Every other place of the city whose article could give the fact (a station's too): none in range may
+    # read as sharing it.
+    with_articles = sorted((p for p in world.places.values() if p.city == target.city and p.id != target.id
+                            and wiki.by_poi_id(p.id) is not None), key=lambda p: p.id)
+    target_text = article_text(wiki.by_poi_id(target.id))
     keys = [k for k in CUES if k in target.facts]
     rng.shuffle(keys)
+    keys.sort(key=lambda k: k == "year_built")  # a decade is shared most widely: the other facts first
     for key in keys:
-        value = _fact_text(key, target.facts[key])
-        sharing = [p for p in peers if key in p.facts and _fact_text(key, p.facts[key]) == value]
-        if not sharing or (key == "architect" and answer_check(key, value) is None):
+        value = cue_value(key, target)
+        if value is None or (key == "architect" and answer_check(key, value) is None):
             continue
-        if not all(contains_phrase(article_text(wiki.by_poi_id(p.id)), value) for p in [target, *sharing]):
+        sharing = [p for p in peers if cue_value(key, p) == value]
+        if len(sharing) < MIN_SHARING + 1:
+            continue
+        if key != "year_built" and not all(contains_phrase(article_text(wiki.by_poi_id(p.id)), value)
+                                           for p in [target, *sharing]):
             continue  # the wiki must state the fact of the landmark and of those sharing it
+        vias = [x for x in sharing if not names_place(target_text, x)
+                and not names_place(article_text(wiki.by_poi_id(x.id)), target)
+                and not names_place(article_of(x).title, target)]
+        if not vias:
+            continue
+        alike = [p for p in with_articles if (v := cue_value(key, p)) is not None and _alike(key, value, v)]
         for start, route in near_starts(world, target, rng)[:30]:
             limit = int(-(-(route.distance_m + 60) // 100) * 100)  # rounded up, 60 m clear of the walk
+            walks: dict[str, float] = {}
 
             def walk_m(p: Any) -> float:
-                try:
-                    return float(world.directions(start.node, p.node).distance_m)
-                except ValueError:
-                    return float("inf")
+                if p.id not in walks:
+                    try:
+                        walks[p.id] = float(world.directions(start.node, p.node).distance_m)
+                    except ValueError:
+                        walks[p.id] = float("inf")
+                return walks[p.id]
 
-            if any(walk_m(p) <= limit + RANGE_MARGIN_M for p in sharing):
-                continue
             if not any(walk_m(p) <= limit - 60 for p in peers):
                 continue  # the range alone would single it out
-            return key, value, start, route, limit
+            for via in rng.sample(vias, len(vias)):
+                others = [p for p in sharing if p.id != via.id]
+                if any(p.id != via.id and walk_m(p) <= limit + RANGE_MARGIN_M for p in alike):
+                    continue  # a landmark near the range shares the fact, or one that reads like it
+                named = {p.id for a in concept_articles(key, value) for p in [target, *others]
+                         if names_place(article_text(a), p)}
+                if target.id in named and len(named) < 2:
+                    continue  # the style's (or architect's) article would name the answer alone
+                if len(others) < MIN_SHARING:
+                    continue
+                return key, value, via, start, route, limit
     return None
 
 
 def landmark_task(world: Any, tid: str, target: Any, article: Any, question_key: str, start: Any, route: Any,
-                  trng: Any, hard: bool, cue: tuple[str, str, int] | None = None) -> Task:
-    """One task: walk to the landmark, look it up, answer. A hard task with a ``cue`` (key, value, range)
-    names the landmark by a wiki fact plus a walking range from the corner, which single it out only
-    together; one without describes it only by its look (no address, no name)."""
+                  trng: Any, hard: bool, cue: tuple[str, str, Any, int] | None = None) -> Task:
+    """One task: walk to the landmark, look it up, answer. A hard task with a ``cue`` (key, shared value, X,
+    range) names the landmark by the fact it shares with the named landmark X plus a walking range from the
+    corner, which single it out only together; one without describes it only by its look (no address, no
+    name)."""
     question, answer = QUESTIONS[question_key][0], QUESTIONS[question_key][1](target.facts[question_key])
     corner = start.name.replace(" & ", " and ")
     if cue is not None:
-        key, value, limit = cue
+        key, value, via, limit = cue
         city = world.city(target.city).name.split(" (")[0]
+        x = article_of(via).title
         intent = (f"You are at the corner of {corner} in {city}. Of the landmarks within about {limit} m of this "
-                  f"corner on foot, exactly one {CUES[key].format(v=value)}, as its wiki article gives "
-                  f"{CUE_LABEL[key]} (other landmarks of the city share that, farther away). Find it: the wiki's "
-                  "articles give each landmark's address, and the map measures walks. "
+                  f"corner on foot, exactly one other than {x} {CUES[key].format(x=x)}, as their wiki articles "
+                  f"give {CUE_LABEL[key]}; other landmarks of the city share it too, farther away. Find it: "
+                  f"{x}'s wiki article gives the fact, the wiki's articles give each landmark's address, and the "
+                  "map measures walks. "
                   f"{WALK_RULE} When you are there, look it up on the wiki and answer: {question} "
                   + answer_rule(FORMS[question_key]))
     elif hard:
@@ -264,6 +356,7 @@ def landmark_task(world: Any, tid: str, target: Any, article: Any, question_key:
                   + answer_rule(FORMS[question_key]))
     end = world.node(target.node)
     oracle = [
+        *([call("browser_goto", url=site_url("wiki", f"/wiki/{article_of(cue[2]).slug}"))] if cue else []),
         call("browser_goto", url=site_url("map", "/directions", **{"from": start.id, "to": target.id})),
         call("switch_environment", target="embodied", message="walk to the landmark"),
         *[call("street_move", neighbour=n) for n in route.nodes[1:]], call("street_stop"),
@@ -289,7 +382,8 @@ def landmark_task(world: Any, tid: str, target: Any, article: Any, question_key:
         metadata={"poi_id": target.id, "article": article.slug, "question": question_key,
                   "shortest_path_m": route.distance_m, "start_lat": world.node(start.node).lat,
                   "start_lng": world.node(start.node).lng, "visual_only": hard and cue is None,
-                  "cue": {"key": cue[0], "value": cue[1], "range_m": cue[2]} if cue else None},
+                  "cue": {"key": cue[0], "value": cue[1], "via": cue[2].id, "via_article": article_of(cue[2]).slug,
+                          "range_m": cue[3]} if cue else None},
     )
 
 
@@ -334,8 +428,9 @@ def generate() -> list[Task]:
 
 
 def hard_tasks(world: Any) -> list[Task]:
-    """Hard by composition: a landmark named by a wiki fact it shares with others of its city and a walking
-    range that holds other landmarks (``cue_task``); the answer is another fact of its article."""
+    """Hard by composition: a landmark named by the wiki fact it shares with another named landmark of its city
+    (which others share too) and a walking range that holds other landmarks (``cue_task``); the answer is
+    another fact of its article."""
     tasks: list[Task] = []
     landmarks = landmarks_of(world)
     hints = [p.description_hint for p in landmarks]
@@ -354,10 +449,11 @@ def hard_tasks(world: Any) -> list[Task]:
         found = cue_task(world, target, trng)
         if found is None:
             continue
-        key, value, start, route, limit = found
+        key, value, via, start, route, limit = found
         questions = [k for k in answerable if k != key]  # the answer is another fact than the cue
         if not questions:
             continue
         tasks.append(landmark_task(world, f"traveling-hard-{target.city}-{len(tasks):03d}", target, article,
-                                   trng.choice(questions), start, route, trng, hard=True, cue=(key, value, limit)))
+                                   trng.choice(questions), start, route, trng, hard=True,
+                                   cue=(key, value, via, limit)))
     return tasks

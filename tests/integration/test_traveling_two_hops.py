@@ -1,0 +1,77 @@
+"""Traveling hard in two hops (issue 26, principle 6), played through the real server (Chromium, the street
+graph, graded from the run directory): the landmark shares a fact with a named landmark X and stands within the
+range; the oracle passes, while going to X instead (its walk, its article, its answer) fails, and so does going
+to another landmark sharing the fact that stands outside the range."""
+
+from __future__ import annotations
+
+import json
+import shutil
+
+import anyio
+import pytest
+
+from ewa_mcp.core.paths import tasks_dir
+from ewa_mcp.core.taskmodel import Task, TaskStore, ToolCall
+from ewa_mcp.envs.street.taskgen.traveling import QUESTIONS, cue_value, landmarks_of
+from ewa_mcp.envs.street.world import get_world
+from ewa_mcp.evaluation.agents import OracleAgent
+from ewa_mcp.evaluation.runner import run_eval
+from ewa_mcp.graders import grade_run
+from ewa_mcp.websites.wiki import store as wiki
+
+needs_browser = pytest.mark.skipif(
+    not (shutil.which("chromium") or shutil.which("chromium-browser")), reason="no Chromium: apt-get install chromium")
+
+
+def two_hop_task() -> Task:
+    """The first hard traveling task whose shared fact is a style (the style's own article is a page a
+    searcher opens first)."""
+    store = TaskStore([tasks_dir()])
+    return next(t for t in sorted(store.all("traveling"), key=lambda t: t.id)
+                if t.difficulty == "hard" and t.metadata["cue"]["key"] == "architectural_style")
+
+
+def go_to(task: Task, place) -> Task:
+    """The oracle's plan sent to ``place`` instead: the walk from the corner, its article, its answer to the
+    task's question."""
+    world = get_world()
+    article = wiki.by_poi_id(place.id)
+    key = task.metadata["question"]
+    answer = QUESTIONS[key][1](place.facts[key]) if key in place.facts else "unknown"
+    calls = [c for c in task.oracle if c.tool == "switch_environment"][:1]
+    route = world.directions(task.start.embodied.node, place.node)
+    calls += [ToolCall(tool="street_move", args={"neighbour": n}) for n in route.nodes[1:]]
+    calls += [ToolCall(tool="street_stop", args={}),
+              ToolCall(tool="switch_environment", args={"target": "web", "message": "look it up"}),
+              ToolCall(tool="browser_goto", args={"url": f"wiki:/wiki/{article.slug}"}),
+              ToolCall(tool="finish_episode", args={"answer": answer})]
+    return task.model_copy(update={"oracle": calls})
+
+
+def play(task: Task, tmp_path, name: str) -> bool:
+    folder = tmp_path / name / "tasks" / task.domain
+    folder.mkdir(parents=True)
+    (folder / "t.json").write_text(json.dumps([task.model_dump(mode="json")]), "utf-8")
+    run = tmp_path / name / "run"
+    anyio.run(lambda: run_eval([task], OracleAgent(), run_dir=run, task_dirs=[folder.parent], workers=1,
+                               progress=False))
+    (episode,) = grade_run(run).episodes
+    return episode.overall_success
+
+
+@needs_browser
+def test_the_landmark_sharing_xs_style_in_range_passes_x_and_one_out_of_range_fail(tmp_path):
+    task = two_hop_task()
+    world = get_world()
+    cue, start = task.metadata["cue"], task.start.embodied.node
+    target, via = world.places[task.metadata["poi_id"]], world.places[cue["via"]]
+    farther = [p for p in landmarks_of(world) if p.city == target.city and p.id not in (target.id, via.id)
+               and wiki.by_poi_id(p.id) is not None and cue_value(cue["key"], p) == cue["value"]]
+    assert farther  # the fact alone does not single the landmark out
+    outside = min(farther, key=lambda p: world.directions(start, p.node).distance_m)
+    assert world.directions(start, outside.node).distance_m > cue["range_m"]
+    assert play(task, tmp_path, "oracle")
+    assert not play(go_to(task, via), tmp_path, "the-named-landmark")
+    assert not play(go_to(task, outside), tmp_path, "out-of-range")
+    assert play(go_to(task, target), tmp_path, "the-plan-to-the-target")  # the altered plan itself can pass
