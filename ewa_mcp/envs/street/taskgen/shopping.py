@@ -17,7 +17,7 @@ from ewa_mcp.taskgen.common import WALK_RULE, call, ref, rng_for, site_url, step
 
 PER_TEMPLATE = 60
 MAX_WALK_M = 2200.0
-# Hard pair tasks: no total within this many dollars of the budget, and no tie for "cheapest for the two".
+# Hard basket tasks: no total within this many dollars of the budget, and no tie for "cheapest for the three".
 PAIR_MARGIN = 0.25
 PAIR_TRIES = 4000
 # Of the draws, the share in the named-stores form (which any store can answer, where prices favour some).
