@@ -25,11 +25,11 @@ def test_at_least_15_percent_hard(domain: str) -> None:
     assert len(hard) >= 0.15 * len(tasks), f"{len(hard)} of {len(tasks)} {domain} tasks are hard"
 
 
-def test_hard_shopping_orders_two_products_at_one_store_within_a_budget() -> None:
+def test_hard_shopping_orders_three_products_at_one_store_within_a_budget() -> None:
     for task in (t for t in suite("shopping") if t["difficulty"] == "hard"):
         orders = [g for g in task["web_goals"] if g["kind"] == "order_placed"]
-        assert len(orders) == 2 and orders[0]["store_id"] == orders[1]["store_id"], task["id"]
-        assert orders[0]["product_id"] != orders[1]["product_id"], task["id"]
+        assert len(orders) == 3 and len({o["store_id"] for o in orders}) == 1, task["id"]
+        assert len({o["product_id"] for o in orders}) == 3, task["id"]
         assert task["embodied_goals"][0]["place_id"] == orders[0]["store_id"], task["id"]
         assert task["embodied_goals"][0]["must_match_order_store"], task["id"]
         assert f"${task['metadata']['budget']:.2f}" in task["intent"], task["id"]

@@ -75,16 +75,18 @@ def wrong_answers(task: dict) -> dict[str, object]:
         return {"nearest seller ignoring stock": nearest(task, sellers(meta["product_id"], meta["size"])),
                 "cheapest store": catalog.cheapest_store(meta["product_id"], meta["size"])}
     if kind == "pair":
-        # Hard by composition: both items in one order at one store, within a budget for the two.
-        both = [sid for sid, total in meta["totals"].items()
-                if all(catalog.stock(p, size, sid) > 0 for p, size in zip(meta["products"], meta["sizes"]))]
-        within = [sid for sid in both if meta["totals"][sid] <= meta["budget"]]
+        # Hard by composition: three items in one order at one store, within a budget for the three.
+        items = list(zip(meta["products"], meta["sizes"], strict=True))
+        every = [sid for sid, total in meta["totals"].items()
+                 if all(catalog.stock(p, size, sid) > 0 for p, size in items)]
+        within = [sid for sid in every if meta["totals"][sid] <= meta["budget"]]
+        each = {f"the cheapest store of product {i + 1} alone": catalog.cheapest_store(p, size)
+                for i, (p, size) in enumerate(items)}
         if meta["named_stores"] is not None:
-            return {"the nearer of the two named stores": nearest(task, meta["named_stores"])}
-        return {"nearest store with both in stock, ignoring the budget": nearest(task, both),
-                "the store where the two cost least together": min(within, key=lambda s: meta["totals"][s]),
-                **{f"the cheapest store of product {i + 1} alone": catalog.cheapest_store(p, size)
-                   for i, (p, size) in enumerate(zip(meta["products"], meta["sizes"]))}}
+            return {"the nearer of the two named stores": nearest(task, meta["named_stores"]), **each}
+        return {"nearest store with all three in stock, ignoring the budget": nearest(task, every),
+                "the store where the three cost least together": min(within, key=lambda s: meta["totals"][s]),
+                **each}
     raise AssertionError(f"unknown shopping template in {task['id']}")
 
 
@@ -166,9 +168,22 @@ def test_position_in_the_intent_never_gives_the_answer_away() -> None:
     assert 0.3 <= sum(first) / len(first) <= 0.7, f"answer named first in {sum(first)} of {len(pairs)}"
 
 
+def test_hard_basket_has_three_items_whose_cheapest_stores_differ() -> None:
+    """Hard tasks: three items, not one store cheapest for all of them (so no single store wins item by
+    item), and the answer is the cheapest store of none of them (only the sum decides)."""
+    for task in (t for t in TASKS if t["id"].startswith("shopping-pair-")):
+        meta = task["metadata"]
+        assert len(meta["products"]) == len(set(meta["products"])) == len(meta["sizes"]) == 3, task["id"]
+        cheapest = {catalog.cheapest_store(p, s) for p, s in zip(meta["products"], meta["sizes"], strict=True)}
+        assert len(cheapest) >= 2 and meta["store_id"] not in cheapest, task["id"]
+        if meta["named_stores"]:  # the other named store is cheapest for one item: a one-price pick fails
+            (rival,) = [sid for sid in meta["named_stores"] if sid != meta["store_id"]]
+            assert rival in cheapest, task["id"]
+
+
 def test_pair_budget_decides_with_a_margin() -> None:
-    """Hard pair tasks: the pickup store sells both in stock within the budget, every total the budget rules
-    out is over it by 25 cents or more (never by a cent), and a nearer store that sells both is over it."""
+    """Hard pair tasks: the pickup store sells all three in stock within the budget, every total the budget rules
+    out is over it by 25 cents or more (never by a cent), and a nearer store that sells all three is over it."""
     for task in (t for t in TASKS if t["id"].startswith("shopping-pair-")):
         meta = task["metadata"]
         totals, budget, answer = meta["totals"], meta["budget"], meta["store_id"]

@@ -1,8 +1,9 @@
 """Hard by composition (issue 26, principle 6): a hard task passes only when every part is right together.
 
 Shopping (played through the real server, Chromium and street graph, graded from the run directory): the
-oracle of a budget task passes; ordering both items at the nearest store that has them (ignoring the budget)
-fails, and so does ordering at the right store but walking to that nearer one. Navigation (the same way):
+oracle of a budget task passes; ordering the three items at the nearest store that has them (ignoring the
+budget) fails, so does ordering them at any item's cheapest store, and so does ordering at the right store
+but walking to that nearer one. Navigation (the same way):
 three stops in the wiki's order pass; the same walk in the order the intent lists them fails, and so does
 the right last stop after the first two in the other order. Cooking (graded offline with
 the kitchen's own checks on real simulator outcomes): a recipe told apart only by a step passes with its own
@@ -45,7 +46,7 @@ def budget_task(store: TaskStore) -> Task:
 
 
 def nearer_over_budget(task: Task) -> str:
-    """The nearest store that has both in stock: over the budget, by construction."""
+    """The nearest store that has all three in stock: over the budget, by construction."""
     meta, world = task.metadata, get_world()
     both = [sid for sid in meta["totals"] if all(shop.stock(p, s, sid) > 0 for p, s in zip(meta["products"], meta["sizes"]))]
     return min(both, key=lambda sid: world.directions(task.start.embodied.node, meta["store_nodes"][sid]).distance_m)
@@ -87,6 +88,10 @@ def test_budget_task_needs_budget_store_and_walk_together(store, tmp_path):
     assert play(task, tmp_path, "oracle")
     assert not play(with_store(task, wrong, wrong), tmp_path, "ignore-budget")
     assert not play(with_store(task, answer, wrong), tmp_path, "wrong-walk")
+    cheapest = {shop.cheapest_store(p, s) for p, s in zip(task.metadata["products"], task.metadata["sizes"])}
+    assert len(cheapest) >= 2 and answer not in cheapest
+    for n, store_id in enumerate(sorted(cheapest)):  # one item's cheapest store, ordered at and walked to
+        assert not play(with_store(task, store_id, store_id), tmp_path, f"item-cheapest-{n}")
 
 
 def step_told_tasks(store: TaskStore) -> list[Task]:

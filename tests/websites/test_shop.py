@@ -257,6 +257,71 @@ def test_checkout_reprices_at_the_chosen_pickup_store(app, sink):
     assert event["order"]["items"][0]["kitchen_type"] == "Apple"
 
 
+def _shown_totals(page: str) -> list[str]:
+    """Every dollar amount the checkout page shows."""
+    return re.findall(r"\$[0-9,]+\.[0-9]{2}", page)
+
+
+def test_checkout_shows_one_chosen_stores_prices_and_total_only(app, sink):
+    """A real store's checkout: the buyer picks one pickup store and sees that store's prices, stock and
+    total; no table of every store's totals and no list of which stores can fill the cart (issue 26: the
+    budget comparison is the buyer's arithmetic)."""
+    c = client(app)
+    apple = in_stock_store("prod-apple", "1 each")
+    eggs = next(o.store_id for o in catalog.get_product("prod-eggs").offers_for_size("12 ct")
+                if o.stock > 0 and o.store_id != apple)
+    add(c, "prod-apple", "1 each", apple, 2)
+    add(c, "prod-eggs", "12 ct", eggs, 1)
+    page = c.get("/checkout").text  # two stores in the cart: none chosen, no price at all
+    assert "Pre-selected" not in page and _shown_totals(page) == [] and "cannot fill" not in page
+    assert "Choose a pickup store below" in page
+    for store in catalog.load_stores():  # every store can be chosen, its address stated
+        assert f'id="pickup-{store.id}"' in page and str(html_escape(store.address)) in page
+    fills = []
+    for store in catalog.load_stores():
+        page = c.get("/checkout", params={"store_id": store.id}).text
+        assert f'value="{store.id}" checked' in page
+        others = [s for s in catalog.load_stores() if s.id != store.id]
+        assert not any(f"at {html_escape(s.name)}" in page for s in others)  # no other store's figures
+        apple_offer = catalog.get_product("prod-apple").offer("1 each", store.id)
+        eggs_offer = catalog.get_product("prod-eggs").offer("12 ct", store.id)
+        sells_both = apple_offer is not None and eggs_offer is not None
+        if sells_both and apple_offer.stock >= 2 and eggs_offer.stock >= 1:
+            total = 2 * apple_offer.price + eggs_offer.price
+            assert f"Total at {html_escape(store.name)}: <strong>${total:,.2f}</strong>" in page
+            assert "cannot fill" not in page and "Not sold here" not in page
+            fills.append((store.id, round(total, 2)))
+        else:
+            assert f"{html_escape(store.name)} cannot fill this order" in page and "Total at" not in page
+    # the figures shown are that store's: placing the order there charges them
+    assert fills, "some store sells both in stock"
+    c.post("/checkout", data={"store_id": fills[0][0]})
+    [event] = sink.of("ep-1", "order_placed")
+    assert (event["order"]["store_id"], event["order"]["total"]) == fills[0]
+
+
+def test_checkout_names_what_the_chosen_store_lacks(app, sink):
+    c = client(app)
+    add(c, "prod-salmon-fillet", "1 lb", "store-wholefoods-union-square", 1)
+    page = c.get("/checkout", params={"store_id": "store-cvs-midtown"}).text
+    assert "CVS Pharmacy Grand Central cannot fill this order" in page
+    assert "does not sell Atlantic Salmon Fillet (1 lb)" in page and "Not sold here" in page
+    assert "Whole Foods" not in page.split("<form")[0]  # the summary above the store choice names only CVS
+    # the chosen fulfilment survives looking at another store
+    page = c.get("/checkout", params={"store_id": "store-wholefoods-union-square", "fulfilment": "delivery"}).text
+    assert 'value="delivery" checked' in page and "Total at Whole Foods Market Union Square" in page
+
+
+def test_checkout_refuses_an_unknown_store_or_fulfilment_in_its_address(app, sink):
+    c = client(app)
+    add(c)
+    r = c.get("/checkout", params={"store_id": "store-mars"})
+    assert r.status_code == 400 and "Unknown pickup store" in r.text and "store-mars" in r.text
+    r = c.get("/checkout", params={"store_id": "store-cvs-midtown", "fulfilment": "drone"})
+    assert r.status_code == 400 and "choose pickup or delivery" in r.text
+    assert not sink.of("ep-1", "order_placed") and "Cart (1)" in c.get("/cart").text
+
+
 def test_checkout_offers_pickup_or_delivery_to_the_kitchen(app, sink):
     c = client(app)
     add(c, "prod-eggs", "12 ct", "store-traderjoes-chelsea", 1)

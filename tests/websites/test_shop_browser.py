@@ -30,7 +30,19 @@ def test_buy_cheddar_in_chromium(site_server, browser_page):
     # A second tab of the same episode sees the same server-side cart.
     other = page.context.new_page()
     other.goto(url + "/checkout")
-    assert other.get_by_label(catalog.get_store(store_id).name, exact=False).is_checked()
+    name = catalog.get_store(store_id).name
+    assert other.get_by_label(name, exact=False).is_checked()
+    price = catalog.price("prod-cheddar-cheese", "16 oz", store_id)
+    assert f"Total at {name}: ${2 * price:,.2f}" in other.locator("main").inner_text()
+    # Another store is looked at by choosing it and asking for its prices: the page then shows that
+    # store's figures only (the comparison across stores is the buyer's to make).
+    elsewhere = next(s for s in catalog.load_stores() if s.id != store_id)
+    other.get_by_label(elsewhere.name, exact=False).check()
+    other.get_by_role("button", name="Show prices at this store").click()
+    other.wait_for_url(f"**/checkout?store_id={elsewhere.id}*")
+    shown = other.locator("main").inner_text()
+    assert f"at {elsewhere.name}" in shown and f"Total at {name}" not in shown
+    other.get_by_label(name, exact=False).check()
     other.get_by_role("button", name="Place order").click()
     assert other.get_by_role("heading", level=1).inner_text() == "Order EWA-1001"
     assert "Thank you" in other.locator("main").aria_snapshot()

@@ -237,6 +237,9 @@ def create_app(ctx: SiteContext) -> Starlette:
     # ------------------------------------------------------------ checkout and orders
     def render_checkout(request: Request, selected: str = "", error: str | None = None,
                         status: int = 200, fulfilment: str = "pickup") -> Response:
+        """The order summary priced at ONE pickup store, the one chosen (as a real store's checkout does):
+        that store's prices, stock and total only. Other stores' prices are on each product page; comparing
+        stores is the buyer's work, so no page lists every store's total or which stores can fill the cart."""
         episode = episode_of(request)
         lines = state.cart(episode)
         line_stores = {line.store.id for line in lines}
@@ -244,13 +247,20 @@ def create_app(ctx: SiteContext) -> Starlette:
         if not selected and len(line_stores) == 1:
             selected = next(iter(line_stores))  # everything was added for one store: preselect it
             preselected = next(line.store for line in lines)  # and say so on the page
-        quotes = [state.quote(episode, store.id) for store in stores] if lines else []
-        return render(request, "checkout.html", status=status, lines=lines, quotes=quotes, selected=selected,
+        quote = state.quote(episode, selected) if lines and selected in {s.id for s in stores} else None
+        return render(request, "checkout.html", status=status, lines=lines, quote=quote, selected=selected,
                       error=error, fulfilment=fulfilment, preselected=preselected)
 
     async def checkout_page(request: Request) -> Response:
-        page_view(request)
-        return render_checkout(request)
+        store_id = request.query_params.get("store_id", "")
+        fulfilment = request.query_params.get("fulfilment", "") or "pickup"
+        if len(store_id) > MAX_FIELD_CHARS or (store_id and store_id not in {s.id for s in stores}):
+            raise HTTPException(400, f"Unknown pickup store {store_id[:40]!r}; choose one of the stores listed "
+                                     f"on the checkout page.")
+        if fulfilment not in FULFILMENTS:
+            raise HTTPException(400, f"Unknown fulfilment {fulfilment[:40]!r}; choose pickup or delivery.")
+        page_view(request)  # its query names the store looked at
+        return render_checkout(request, selected=store_id, fulfilment=fulfilment)
 
     async def checkout_submit(request: Request) -> Response:
         form = await _form(request)

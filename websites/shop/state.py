@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import sqlite3
 import threading
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -129,12 +129,25 @@ class Order:
 
 
 @dataclass
+class QuoteLine:
+    """One product and size of the cart priced at one store: ``unit_price_cents`` is None where the store
+    does not sell it; ``left`` is that store's stock for this episode."""
+
+    product: catalog.Product
+    size: str
+    quantity: int
+    unit_price_cents: int | None
+    left: int
+
+
+@dataclass
 class StoreQuote:
     """What the cart would cost when picked up at one store, and what stops it."""
 
     store: catalog.Store
     total_cents: int
     problems: list[str]
+    lines: list[QuoteLine] = field(default_factory=list)
 
 
 class ShopState:
@@ -285,19 +298,21 @@ class ShopState:
         for line in lines:
             key = (line.product.id, line.size)
             needed[key] = needed.get(key, 0) + line.quantity
-        total, problems = 0, []
+        total, problems, priced = 0, [], []
         for (product_id, size), quantity in needed.items():
             product = catalog.get_product(product_id)
             offer = product.offer(size, store_id)
             if offer is None:
                 problems.append(f"{store.name} does not sell {product.name} ({size}).")
+                priced.append(QuoteLine(product, size, quantity, None, 0))
                 continue
             left = self.available(episode, product_id, size, store_id)
             if quantity > left:
                 problems.append(f"{store.name} has {left} of {product.name} ({size}) in stock; your cart has "
                                 f"{quantity}.")
             total += cents(offer.price) * quantity
-        return StoreQuote(store, total, problems)
+            priced.append(QuoteLine(product, size, quantity, cents(offer.price), left))
+        return StoreQuote(store, total, problems, priced)
 
     def place_order(self, episode: str, store_id: str, fulfilment: str = "pickup") -> Order:
         if fulfilment not in FULFILMENTS:

@@ -17,7 +17,7 @@ from ewa_mcp.taskgen.common import WALK_RULE, call, ref, rng_for, site_url, step
 
 PER_TEMPLATE = 60
 MAX_WALK_M = 2200.0
-# Hard pair tasks: no total within this many dollars of the budget, and no tie for "cheapest for the two".
+# Hard basket tasks: no total within this many dollars of the budget, and no tie for "cheapest for the three".
 PAIR_MARGIN = 0.25
 PAIR_TRIES = 4000
 # Of the draws, the share in the named-stores form (which any store can answer, where prices favour some).
@@ -390,10 +390,15 @@ def nearest_tasks(ctx: Context) -> list[Task]:
     return out
 
 
-def pair_total(product: Any, size: str, other: Any, other_size: str, store_id: str) -> float | None:
-    """What the two items cost together at one store, or None when it does not sell both."""
-    a, b = product.offer(size, store_id), other.offer(other_size, store_id)
-    return None if a is None or b is None else round(a.price + b.price, 2)
+# Items in one hard order: three prices at each of the four stores, added by the agent (the checkout shows
+# the chosen store's total only, so the comparison across stores is the agent's arithmetic).
+BASKET_ITEMS = 3
+
+
+def basket_total(items: list[tuple[Any, str]], store_id: str) -> float | None:
+    """What the items cost together at one store, or None when it does not sell every one."""
+    offers = [product.offer(size, store_id) for product, size in items]
+    return None if any(o is None for o in offers) else round(sum(o.price for o in offers if o is not None), 2)
 
 
 def pair_budget(total: float, over: list[float]) -> float | None:
@@ -406,27 +411,38 @@ def pair_budget(total: float, over: list[float]) -> float | None:
     return None
 
 
+def _listing(items: list[tuple[Any, str]]) -> str:
+    """ "A (s), B (s) and C (s)" as the intent names them."""
+    named = [f"{p.name} ({size})" for p, size in items]
+    return ", ".join(named[:-1]) + " and " + named[-1]
+
+
 def pair_tasks(ctx: Context) -> list[Task]:
-    """Hard by composition (issue 26, principle 6): two products bought together in one order at one pickup
-    store, within a budget for the two, at the nearest store that can sell both within it. Each part
-    decides: the nearest store with both in stock is over the budget; the store where the two cost least
-    together is farther than the answer; the cheapest store of either item alone does not sell the other
-    within the budget (or at all). The agent must read both prices at every store, add them, check the
-    budget and the stock, and compare walks; every number it needs is on the product pages and the map."""
+    """Hard by composition (issue 26, principle 6): three products bought together in one order at one pickup
+    store, within a budget for the three, at the nearest store that can sell all three within it. Each part
+    decides: the nearest store with all three in stock is over the budget; the store where the three cost
+    least together is farther than the answer; the items' cheapest stores are not all one store, and none
+    of them is the answer. The agent must read three prices at every store, add them, check the budget and
+    the stock, and compare walks; every number it needs is on the product pages and the map (the checkout
+    shows one chosen store's total at a time). Ids keep the family's name, ``shopping-pair-*``."""
     out: list[Task] = []
     rng = rng_for("shopping", "pair")
     counts = ctx.store_counts()
 
     def draw() -> Any:
-        a, b = rng.sample(ctx.products, 2)
-        size_a, size_b = rng.choice(a.sizes).label, rng.choice(b.sizes).label
+        products = rng.sample(ctx.products, BASKET_ITEMS)
+        items = [(p, rng.choice(p.sizes).label) for p in products]
         start = rng.choice(ctx.pair_starts)
-        totals = {sid: pair_total(a, size_a, b, size_b, sid) for sid in ctx.stores}
-        stocked = sorted((sid for sid, t in totals.items() if t is not None and in_stock(a, size_a, sid)
-                          and in_stock(b, size_b, sid)), key=lambda sid: ctx.walk(start, sid).distance_m)
+        totals = {sid: basket_total(items, sid) for sid in ctx.stores}
+        stocked = sorted((sid for sid, t in totals.items() if t is not None
+                          and all(in_stock(p, size, sid) for p, size in items)),
+                         key=lambda sid: ctx.walk(start, sid).distance_m)
+        cheapest_each = {catalog.cheapest_store(p.id, size) for p, size in items}
+        if len(cheapest_each) < 2:
+            return None  # one store cheapest for every item would answer "cheapest" item by item
         if rng.random() < NAMED_SHARE:
-            return named_draw(a, b, size_a, size_b, start, totals, stocked)
-        for k in range(1, len(stocked)):  # never the nearest store with both: the budget must decide
+            return named_draw(items, start, totals, stocked, cheapest_each)
+        for k in range(1, len(stocked)):  # never the nearest store with all three: the budget must decide
             answer = stocked[k]
             nearer = [totals[sid] for sid in stocked[:k]]
             budget = pair_budget(totals[answer], nearer)  # type: ignore[arg-type]
@@ -436,24 +452,27 @@ def pair_tasks(ctx: Context) -> list[Task]:
             farther = [sid for sid in within if sid != answer]
             if not farther or ctx.nearest(start, within) != answer:
                 return None  # distance must decide among the stores within the budget, by 100 m or more
-            cheapest_pair = min(within, key=lambda sid: totals[sid])  # type: ignore[arg-type,return-value]
-            if cheapest_pair == answer or any(abs(totals[s] - totals[cheapest_pair]) < PAIR_MARGIN  # type: ignore[operator]
-                                              for s in within if s != cheapest_pair):
-                return None  # "cheapest for the two" must point elsewhere, unambiguously
-            if answer in (catalog.cheapest_store(a.id, size_a), catalog.cheapest_store(b.id, size_b)):
-                return None  # the cheapest store of one item alone is not the answer
-            return a, b, size_a, size_b, start, answer, budget, totals, None
+            cheapest_basket = min(within, key=lambda sid: totals[sid])  # type: ignore[arg-type,return-value]
+            if cheapest_basket == answer or any(abs(totals[s] - totals[cheapest_basket]) < PAIR_MARGIN  # type: ignore[operator]
+                                                for s in within if s != cheapest_basket):
+                return None  # "cheapest for the three" must point elsewhere, unambiguously
+            if answer in cheapest_each:
+                return None  # no item's cheapest store is the answer
+            return items, start, answer, budget, totals, None
         return None
 
-    def named_draw(a: Any, b: Any, size_a: str, size_b: str, start: Any, totals: dict[str, float | None],
-                   stocked: list[str]) -> Any:
-        """The other form: two stores named, the one that can sell both within the budget is the answer, the
-        other is nearer (so "the nearer one" fails) and sells both, over the budget. Any store can be the
-        answer this way, which spreads the pickup stores where prices favour some stores (issue 26)."""
-        if not stocked:
+    def named_draw(items: list[tuple[Any, str]], start: Any, totals: dict[str, float | None],
+                   stocked: list[str], cheapest_each: set[str]) -> Any:
+        """The other form: two stores named, the one that can sell all three within the budget is the
+        answer, the other is nearer (so "the nearer one" fails) and sells all three, over the budget; the
+        other is the cheapest store of one of the items and the answer is no item's cheapest (so picking by
+        any one price fails: only the sum decides). Any store can be the answer this way, which spreads the
+        pickup stores where prices favour some stores (issue 26)."""
+        choices = [sid for sid in stocked if sid not in cheapest_each]
+        if not choices:
             return None
-        answer: str = rng.choice(stocked)
-        rivals = [sid for sid in ctx.stores if sid != answer and totals[sid] is not None
+        answer: str = rng.choice(choices)
+        rivals = [sid for sid in ctx.stores if sid != answer and totals[sid] is not None and sid in cheapest_each
                   and ctx.walk(start, answer).distance_m - ctx.walk(start, sid).distance_m >= 100]
         if not rivals:
             return None
@@ -463,31 +482,31 @@ def pair_tasks(ctx: Context) -> list[Task]:
             return None
         named = [answer, rival]
         rng.shuffle(named)  # the answer is named first in about half the tasks
-        return a, b, size_a, size_b, start, answer, budget, totals, named
+        return items, start, answer, budget, totals, named
 
     for n in slots(out):
-        picked = balanced(draw, lambda c: c[5], counts, tries=PAIR_TRIES)  # the pickup store spreads over the stores
+        picked = balanced(draw, lambda c: c[2], counts, tries=PAIR_TRIES)  # the pickup store spreads over the stores
         if picked is None:
             continue
-        a, b, size_a, size_b, start, store_id, budget, totals, named = picked
+        items, start, store_id, budget, totals, named = picked
         store = ctx.stores[store_id]
         route, place = ctx.walk(start, store_id), ctx.store_places[store_id]
         node = ctx.world.node(place.node)
         money = f"${budget:.2f}"
         if named is None:
-            intent = (f"Buy me {a.name} ({size_a}) and {b.name} ({size_b}) together, in one order for pickup at "
-                      f"one store, spending at most {money} on the two. Of the stores where both are in stock "
-                      f"and cost {money} or less together, pick the one nearest to {start.name} on foot; then "
-                      f"walk there from {start.name} to pick them up. {WALK_RULE}")
+            intent = (f"Buy me {_listing(items)} together, in one order for pickup at one store, spending at "
+                      f"most {money} on the three. Of the stores where all three are in stock and cost {money} "
+                      f"or less together, pick the one nearest to {start.name} on foot; then walk there from "
+                      f"{start.name} to pick them up. {WALK_RULE}")
         else:
             first, second = (ctx.stores[sid].name for sid in named)
-            intent = (f"Buy me {a.name} ({size_a}) and {b.name} ({size_b}) together, in one order for pickup at "
-                      f"{first} or {second}: whichever of the two has both in stock and sells the two for "
-                      f"{money} or less in all. Then walk there from {start.name} to pick them up. {WALK_RULE}")
+            intent = (f"Buy me {_listing(items)} together, in one order for pickup at {first} or {second}: "
+                      f"whichever of the two has all three in stock and sells the three for {money} or less "
+                      f"in all. Then walk there from {start.name} to pick them up. {WALK_RULE}")
         if any(t.intent == intent for t in out):
             counts[store_id] -= 1
             continue  # the same question twice
-        oracle = [*[c for product, size in ((a, size_a), (b, size_b)) for c in buy_oracle(product, size, store)[:4]],
+        oracle = [*[c for product, size in items for c in buy_oracle(product, size, store)[:4]],
                   call("browser_goto", url=site_url("shop", "/checkout")),
                   call("browser_click", element=ref("button", "Place order")),
                   call("browser_goto", url=site_url("map", "/directions", **{"from": start.name, "to": store_id})),
@@ -500,17 +519,16 @@ def pair_tasks(ctx: Context) -> list[Task]:
             start=StartState(environment="web", web=WebStart(start_url="shop:/"),
                              embodied=StreetStart(city="manhattan", node=start.node,
                                                   heading=round(rng.choice([lk.heading for lk in links]), 1))),
-            web_goals=[OrderPlaced(product_id=a.id, size=size_a, quantity=1, store_id=store_id),
-                       OrderPlaced(product_id=b.id, size=size_b, quantity=1, store_id=store_id)],
+            web_goals=[OrderPlaced(product_id=p.id, size=size, quantity=1, store_id=store_id) for p, size in items],
             embodied_goals=[ReachedPlace(city="manhattan", node=place.node, lat=node.lat, lng=node.lng,
                                          place_id=store_id, must_match_order_store=True)],
             step_limit=step_budget("shopping", "hard", len(oracle)),
             oracle=oracle,
             metadata={"store_nodes": {sid: p.node for sid, p in ctx.store_places.items()},
                       "shortest_path_m": route.distance_m, "start_lat": ctx.world.node(start.node).lat,
-                      "start_lng": ctx.world.node(start.node).lng, "products": [a.id, b.id],
-                      "sizes": [size_a, size_b], "store_id": store_id, "budget": budget, "named_stores": named,
-                      "totals": {sid: t for sid, t in totals.items() if t is not None}},
+                      "start_lng": ctx.world.node(start.node).lng, "products": [p.id for p, _ in items],
+                      "sizes": [size for _, size in items], "store_id": store_id, "budget": budget,
+                      "named_stores": named, "totals": {sid: t for sid, t in totals.items() if t is not None}},
         ))
     return out
 
