@@ -211,7 +211,7 @@ def shopping_items(intent: str) -> tuple[list[tuple[Any, str]], str | None]:
     m = re.search(r"How many calories are in (.+?) and (.+?) per serving", intent)
     if m:
         product = next((p for p in catalog.load_products() if p.name == m.group(1)), None)
-        if product is None:
+        if product is None or product.nutrition is None:
             return [], None
         return [(product, product.sizes[0].label)], str(product.nutrition.calories)
     return named_products(intent), None
@@ -238,7 +238,7 @@ def named_stores(intent: str) -> list[str]:
 # checkout, the order, the map's directions, two switches, the stop and the finish.
 WEB_CALLS_PER_ITEM, FIXED_CALLS = 4, 7
 # How the step limit used to be set (twice the oracle plus a margin): what the limit would say of the walk.
-OLD_LIMIT_MARGIN = 20
+OLD_LIMIT_MARGIN = 15
 
 
 def implied_moves(step_limit: int, n_items: int) -> float:
@@ -375,7 +375,8 @@ async def wiki_pick(w: Walker, intent: str) -> Any | None:
 class StoreRuleAgent:
     """Shopping by a cheap store rule (``rule``): order the intent's items (a size question: the first
     listed size; a calories question: the first named product) at the store the rule picks among those
-    listing them, stock not read, walk there by the map's route, stop, and answer what was ordered."""
+    listing them (of the stores the intent names, where it names any), stock and budget not read, walk there
+    by the map's route, stop, and answer what was ordered."""
 
     name = ""
     rule = ""
@@ -388,9 +389,12 @@ class StoreRuleAgent:
         items, answer = shopping_items(intent)
         w = Walker(s)
         start = await w.here()
-        store = pick_store(self.rule, sellers(items), items, start, int(seen.get("step_limit") or 0)) \
+        # where the intent names stores (a calories question names one, a two-store order two), only those
+        named = named_stores(intent)
+        candidates = [sid for sid in sellers(items) if not named or sid in named]
+        store = pick_store(self.rule, candidates, items, start, int(seen.get("step_limit") or 0)) \
             if items and start else None
-        if store is None:
+        if store is None or start is None:
             return await finish(s, answer)
         await order(w, items, store)
         await w.directions(start, store)
@@ -437,9 +441,10 @@ class StopEliminationAgent:
     async def play(self, s: Session) -> None:
         seen = visible(s)
         parsed = stops_of(str(seen.get("intent", ""))) if seen.get("domain") == "navigation" else None
-        places = [resolve(x) for x in parsed[1]] if parsed else []
+        found = [resolve(x) for x in parsed[1]] if parsed else []
+        places = [p for p in found if p is not None]
         origin = resolve(parsed[0]) if parsed else None
-        if origin is None or len(places) != 3 or any(p is None for p in places):
+        if origin is None or len(places) != 3:
             return await finish(s)
         w = Walker(s)
         for p in places:
