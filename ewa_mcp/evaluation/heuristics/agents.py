@@ -420,6 +420,11 @@ class FirstRecipeAgent:
         await finish(s)
 
 
-HEURISTICS: dict[str, type] = {a.name: a for a in (PriorAgent, GeoLexicalAgent, WikiSearchAgent,
-                                                   OrderEverywhereAgent, FirstListedAgent, CookEverythingAgent,
-                                                   LookAlikeAgent, FirstRecipeAgent)}
+def _table() -> dict[str, type]:
+    from .walking import WALKING  # the walking agents build on this module's helpers
+
+    return {a.name: a for a in (PriorAgent, GeoLexicalAgent, WikiSearchAgent, OrderEverywhereAgent, FirstListedAgent,
+                                CookEverythingAgent, LookAlikeAgent, FirstRecipeAgent, *WALKING)}
+
+
+HEURISTICS: dict[str, type] = _table()

@@ -1,0 +1,88 @@
+"""What a cheap walking rule would get over the whole suite (docs/verified.md, "Walking heuristics"), read
+from the task files without playing: the share of tasks where the rule's choice is the task's target.
+
+    nice .venv/bin/python benchmarks/bench_walk_priors.py
+
+Rules are the walking heuristic agents' choices (ewa_mcp/evaluation/heuristics/walking.py): for a
+three-stop navigation task the stop each rule ends at; for shopping the store (and product or size) each
+picks. A ceiling only: the agent must still place the order and walk, which it does (tests/core/
+test_walking_heuristics.py). Numbers printed here are measurements, not assertions.
+"""
+
+from __future__ import annotations
+
+import sys
+from collections import Counter, defaultdict
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+
+from ewa_mcp.core.taskmodel import TaskStore  # noqa: E402
+from ewa_mcp.envs.street.taskgen.navigation import nearest_first  # noqa: E402
+from ewa_mcp.evaluation.heuristics.walking import (  # noqa: E402
+    elimination_end,
+    named_stores,
+    pick_store,
+    resolve,
+    sellers,
+    shopping_items,
+    stops_of,
+    world,
+)
+
+
+def family(task_id: str) -> str:
+    return task_id.split("-")[1]
+
+
+def main() -> int:
+    store = TaskStore([ROOT / "tasks"])
+    nav: Counter[str] = Counter()
+    for t in store.all("navigation"):
+        if t.difficulty != "hard":
+            continue
+        origin_text, listed_text = stops_of(t.intent) or ("", [])
+        origin, listed = resolve(origin_text), [resolve(x) for x in listed_text]
+        end = t.metadata["stops"][-1]
+        nav["tasks"] += 1
+        nav["elimination (neither listed last nor the nearest-first end)"] += elimination_end(origin, listed).id == end
+        nav["the first listed"] += listed[0].id == end
+        nav["the middle listed"] += listed[1].id == end
+        nav["the last listed (the intent's order)"] += listed[2].id == end
+        nav["nearest-first walk's end"] += nearest_first(world(), origin, listed) == end
+    n = nav.pop("tasks")
+    print(f"navigation hard ({n} tasks): the rule's last stop is the newest")
+    for rule, hits in nav.items():
+        print(f"  {rule}: {hits} ({100 * hits / n:.0f} %)")
+
+    cells: dict[tuple[str, str], Counter[str]] = defaultdict(Counter)
+    for t in store.all("shopping"):
+        items, answer = shopping_items(t.intent)
+        key = (t.difficulty or "-", family(t.id))
+        cell = cells[key]
+        cell["tasks"] += 1
+        named = named_stores(t.intent)  # the store agents choose among the stores the intent names, if any
+        start, candidates = t.start.embodied.node, [sid for sid in sellers(items) if not named or sid in named]
+        right_items = (answer is None or t.answer is None or answer in t.answer.must_include) and (
+            "product_id" not in t.metadata or items[0][0].id == t.metadata["product_id"])
+        for rule in ("nearest", "cheapest", "step-limit"):
+            picked = pick_store(rule, candidates, items, start, t.step_limit)
+            cell[f"{rule}-store"] += right_items and picked == t.metadata["store_id"]
+        cell["first named store (directions-walker)"] += right_items and bool(named) and named[0] == t.metadata["store_id"]
+    print("\nshopping: the rule's store (and, for a question, its guess of product or size) is the target")
+    for (difficulty, fam), cell in sorted(cells.items()):
+        n = cell.pop("tasks")
+        print(f"  {difficulty} {fam} ({n} tasks): " + ", ".join(f"{r} {h} ({100 * h / n:.0f} %)" for r, h in cell.items()))
+    sizes = Counter(t.difficulty or "-" for t in store.all("shopping"))
+    for difficulty in ("easy", "medium", "hard"):
+        rows = [c for (d, _), c in cells.items() if d == difficulty]
+        if rows:
+            hits, rule = max((sum(c[r] for c in rows), r) for r in rows[0])
+            print(f"  {difficulty}: best rule {rule}: {hits} of {sizes[difficulty]} "
+                  f"({100 * hits / sizes[difficulty]:.0f} %)")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
