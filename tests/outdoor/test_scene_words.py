@@ -68,3 +68,64 @@ def test_a_street_named_in_a_frontage_keeps_its_capitals(world):
                 assert street in streets, (street, text)
                 named += 1
     assert named > 0
+
+
+def _shopping_stores(world):
+    import json
+    from pathlib import Path
+
+    ids = set()
+    for path in sorted((Path(__file__).resolve().parents[2] / "tasks" / "shopping").glob("*.json")):
+        for task in json.loads(path.read_text(encoding="utf-8")):
+            ids |= {g["place_id"] for g in task.get("embodied_goals", []) if g.get("place_id")}
+    return sorted(ids | {p.id for p in world.stores()})
+
+
+def test_a_store_ahead_is_on_the_side_of_the_street_its_node_names(world):
+    # play-test (shopping-pair-056): at Herald Square facing west, a view said Target was "on the
+    # right-hand side of West 34th Street" where its node said "on your left": the street bends off the
+    # view's axis there. A view naming a street side names the one the node names facing the same way.
+    from ewa_mcp.envs.street.scene import frontage_where, places_here
+    from ewa_mcp.geometry import haversine_m
+
+    stores = _shopping_stores(world)
+    assert "store-target-herald-square" in stores
+    named = 0
+    for store_id in stores:
+        store = world.places[store_id]
+        graph, at = world.locate(store.node)
+        for i in range(len(graph.ids)):
+            if haversine_m(graph.lat[i], graph.lng[i], store.lat, store.lng) > 250:
+                continue
+            headings = {(h + turn) % 360 for *_, h in graph.adj[i] for turn in (0, 90, 180, 270)}
+            for heading in sorted(headings | {0.0, 90.0, 180.0, 270.0}):
+                scene = compute_scene(world, graph, i, heading, "front")
+                for f in scene.frontages[:5]:
+                    where = frontage_where(scene, f)
+                    if f.place_id != store_id or "-hand side of" not in where:
+                        continue
+                    said = next(s for s in places_here(world, graph, at, heading) if store.name in s)
+                    assert said.startswith(f"on your {f.side},"), (graph.ids[i], heading, where, said)
+                    named += 1
+    assert named > 50
+
+
+def test_a_place_on_a_cross_street_is_not_put_on_the_street_ahead(world):
+    # CVS on East 42nd Street, seen from 3rd Avenue just south of the corner, was said to be "on the
+    # right-hand side of 3rd Avenue": its entrance was near the view's axis, but its street is another.
+    from ewa_mcp.envs.street.scene import frontage_where
+
+    graph = world.city("manhattan")
+    store = world.places["store-cvs-midtown"]
+    assert graph.node_streets[graph.index[store.node]] == ("East 42nd Street",)
+    seen = 0
+    for i in range(len(graph.ids)):
+        if graph.node_streets[i] != ("3rd Avenue",):
+            continue
+        for *_, h in graph.adj[i]:
+            scene = compute_scene(world, graph, i, h, "front")
+            for f in scene.frontages[:5]:
+                if f.place_id == store.id:
+                    seen += 1
+                    assert "3rd Avenue" not in frontage_where(scene, f), describe(scene)
+    assert seen > 0
