@@ -129,3 +129,42 @@ def test_a_place_on_a_cross_street_is_not_put_on_the_street_ahead(world):
                     seen += 1
                     assert "3rd Avenue" not in frontage_where(scene, f), describe(scene)
     assert seen > 0
+
+
+def test_no_view_inside_a_park_sees_a_row_of_building_fronts(world):
+    # play-test (navigation-pittsburgh-034): at the tip of Point State Park, where its promenades meet,
+    # a view west said "a row of building fronts across the sidewalk" and the view south open ground:
+    # the park's centre point lay 17 m south, outside the west view's cone, though the park is all around.
+    from ewa_mcp.envs.street.scene import park_around
+
+    graph = world.city("pittsburgh")
+    tip = graph.index["pg-927c6884ff"]
+    assert park_around(world, graph, tip).id == "poi-pittsburgh-point-state-park"
+    inside = [i for i in range(len(graph.ids)) if park_around(world, graph, i) is not None]
+    assert len(inside) > 10
+    closed = 0
+    for i in inside:
+        for heading in sorted({(h + t) % 360 for *_, h in graph.adj[i] for t in (0, 90, 180, 270)} | {279.0}):
+            scene = compute_scene(world, graph, i, heading, "front")
+            assert scene.in_park
+            if not scene.road_ahead:
+                text = describe(scene)
+                assert "building fronts" not in text and "open ground, a wide lawn at the tip" in text, text
+                closed += 1
+    assert closed > 20
+
+
+def test_a_street_named_for_a_park_along_its_edge_is_not_inside_it(world):
+    # "Union Square East" runs along the square, with buildings on its other side; only a path named for
+    # a park ("... Promenade") runs through one.
+    from ewa_mcp.envs.street.scene import park_around
+
+    graph = world.city("manhattan")
+    edge = [i for i in range(len(graph.ids)) if graph.node_streets[i] == ("Union Square East",)]
+    assert edge and all(park_around(world, graph, i) is None for i in edge)
+    fronts = 0
+    for i in edge:
+        for heading in (90.0, 270.0):
+            scene = compute_scene(world, graph, i, heading, "front")
+            fronts += not scene.road_ahead and "building fronts" in describe(scene)
+    assert fronts > 0

@@ -79,6 +79,7 @@ class Scene:
     skyline: list[SkylineItem] = field(default_factory=list)
     street_signs: list[str] = field(default_factory=list)
     open_space: str = ""  # a park's look where it lies across the sidewalk this way ("" for none)
+    in_park: bool = False  # the node is on a path through a park: no building fronts line the street ahead
     seed: int = 0
     # The places at this very node whose entrance lies within HERE_HALF_ANGLE of this view: what the text
     # mode's "Right here:" line names, drawn close up facing the camera (describe never reads this).
@@ -150,10 +151,35 @@ OPEN_SPACE_MIN_REACH_M = 120.0  # a small park is seen this far from its centre;
 OPEN_SPACE_MARGIN_M = 60.0  # its centre lies as far inside as from its street node, plus this
 
 
+# A street named for a park with one of these words runs through it ("Point State Park Promenade"); one
+# named for it otherwise may run along its edge ("Union Square East").
+PARK_PATH_WORDS = ("promenade", "path", "walk", "trail", "esplanade", "mall")
+
+
+def park_around(world: World, graph: CityGraph, i: int) -> Place | None:
+    """The park a node lies inside: every street there is a path through that park."""
+    streets = graph.node_streets[i]
+    if not streets:
+        return None
+    cache: dict[str, list[Place]] = world.__dict__.setdefault("_parks", {})
+    if graph.city not in cache:
+        cache[graph.city] = sorted((p for p in world.places.values()
+                                    if p.city == graph.city and p.kind in OPEN_SPACE_KINDS), key=lambda p: p.id)
+    for p in cache[graph.city]:
+        if all(p.name in s and any(w in s.lower().split() for w in PARK_PATH_WORDS) for s in streets):
+            return p
+    return None
+
+
 def open_space_this_way(world: World, graph: CityGraph, i: int, heading: float) -> str:
     """The look of a park lying this way beside the street (its centre within reach and within 45° of
     the view): a view across it shows lawns and trees, not building fronts. The data has no park
-    outlines, so a park's reach is judged from how far its centre lies from its street node."""
+    outlines, so a park's reach is judged from how far its centre lies from its street node. Inside a
+    park (on its paths, park_around) it lies every way: its centre may be a few metres off, in any
+    direction, and still the ground all around is the park's."""
+    inside = park_around(world, graph, i)
+    if inside is not None:
+        return inside.description_hint or "an open park with lawns and trees"
     lat0, lng0 = graph.lat[i], graph.lng[i]
     best: tuple[float, str] | None = None
     for p in world.places.values():
@@ -244,6 +270,7 @@ def compute_scene(world: World, graph: CityGraph, i: int, heading: float, label:
             scene.skyline.append(SkylineItem(round(rel, 1), round(d, 1), float(height), _style(p),
                                              p.description_hint, p.id))
     scene.open_space = open_space_this_way(world, graph, i, heading)
+    scene.in_park = park_around(world, graph, i) is not None
     scene.here = places_in_view_here(world, graph, i, heading)
     scene.skyline = _unhidden(scene.skyline)
     if not scene.road_ahead and not scene.open_space:

@@ -134,6 +134,9 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
     end = max(end, 16.0)
     far = min(end, 240.0)
     if scene.road_ahead:
+        if scene.in_park:  # the park goes on past the path's end: lawn to the horizon, no building fronts
+            draw.polygon([cam.project(-400, 0, 2.0), cam.project(-400, 0, 2000), cam.project(400, 0, 2000),
+                          cam.project(400, 0, 2.0)], fill=(96, 150, 72))
         road = [cam.project(-ROAD_HALF_M, 0, 2.0), cam.project(-ROAD_HALF_M, 0, far), cam.project(ROAD_HALF_M, 0, far),
                 cam.project(ROAD_HALF_M, 0, 2.0)]
         draw.polygon(road, fill=ROAD)
@@ -147,7 +150,7 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
                               cam.project(sgn * 60, 0, o.distance_m + 6), cam.project(sgn * ROAD_HALF_M, 0, o.distance_m + 6)],
                              fill=ROAD)
                 cues.add(f"opening:{o.side}:{round(o.distance_m)}")
-        if far < AHEAD_END_WALL:
+        if far < AHEAD_END_WALL and not scene.in_park:
             _end_wall(draw, cam, far + 12, rng, windows=windows)
     elif scene.open_space or park_here(scene):
         cues.add("road_ends")
@@ -212,6 +215,9 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
             cues |= {f"detail:{lm.place_id}:{d}" for d in draw_details(draw, quad, lm.hint)}
             continue
         x = FACADE_X_M if side == "right" else -FACADE_X_M
+        if lm is None and scene.in_park:  # a path through a park: lawns and trees either side, no fronts
+            _park_stretch(draw, cam, x, z0, z1)
+            continue
         if lm is not None and lm.kind in OPEN_SPACE_KINDS:  # a park along the street: lawn and trees, no front
             _park_stretch(draw, cam, x, z0, z1)
             low = [cam.project(x, 0, z0), cam.project(x, 8.0, z0), cam.project(x, 8.0, z1), cam.project(x, 0, z1)]
