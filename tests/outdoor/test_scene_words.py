@@ -168,3 +168,24 @@ def test_a_street_named_for_a_park_along_its_edge_is_not_inside_it(world):
             scene = compute_scene(world, graph, i, heading, "front")
             fronts += not scene.road_ahead and "building fronts" in describe(scene)
     assert fronts > 0
+
+
+def test_a_view_with_no_street_ahead_puts_nothing_off_the_street_ahead(world):
+    # oracle walk (navigation-pittsburgh-008): "No street continues this way: ... Off the street ahead, 14° to
+    # the right of straight ahead, 10 m away: a pale tower" — there was no street ahead to be off.
+    import re
+
+    graph = world.city("pittsburgh")
+    start = graph.index["pg-3194bff4ac"]
+    text = describe(compute_scene(world, graph, start, 19.0, "right"))
+    assert text.startswith("right (facing north, 19°): No street continues this way")
+    assert re.search(r"\. 1[45]° to the right of straight ahead, 10 m away: a pale tower", text), text
+    closed = 0
+    for i in range(0, len(graph.ids), 3):
+        for *_, h in graph.adj[i]:
+            scene = compute_scene(world, graph, i, (h + 90) % 360, "right")
+            if not scene.road_ahead:
+                text = describe(scene)
+                assert "street ahead" not in text, text
+                closed += 1
+    assert closed > 20

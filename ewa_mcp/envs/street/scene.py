@@ -349,7 +349,9 @@ def frontage_where(scene: Scene, f: Frontage) -> str:
         return f"ahead on the {f.side}-hand side of {scene.ahead_street}"
     if f.side == "ahead":
         return "straight ahead"
-    return f"off the street ahead, {int(round(abs(f.rel_angle)))}° to the {f.side} of straight ahead"
+    sight = f"{int(round(abs(f.rel_angle)))}° to the {f.side} of straight ahead"
+    # where no street continues this way there is no street ahead to be off
+    return f"off the street ahead, {sight}" if scene.road_ahead else sight
 
 
 def describe(scene: Scene) -> str:
