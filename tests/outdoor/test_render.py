@@ -69,3 +69,26 @@ def test_the_details_a_description_names_are_drawn(world):
     for f in scene.frontages + scene.here:  # the place drawn close up at its node reads the hint too
         f.hint = "a plain building"
     assert not any(colour == LION for _, colour in render(scene).getcolors(maxcolors=1 << 16))
+
+
+def test_a_place_straight_ahead_on_a_street_that_goes_on_does_not_block_it(world):
+    # oracle walk (shopping-pair-023), Broadway north at West 27th Street: the text says Broadway goes on
+    # 250 m and the 28 St station is "straight ahead, 52 m away"; the picture drew the station as a
+    # building front across the road at 52 m, as if the street ended there.
+    from ewa_mcp.envs.street.facades import LANE, ROAD, STREET_CAMERA
+    from ewa_mcp.envs.street.street_view import render
+
+    graph = world.city("manhattan")
+    checked = 0
+    for node, heading in (("mn-f682acba60", 8.0), ("mn-289c60f1ba", 8.0), ("mn-45058621c3", 9.0)):
+        scene = compute_scene(world, graph, graph.index[node], heading, "front")
+        assert scene.road_ahead
+        img = render(scene)
+        for f in scene.frontages:
+            # where the road itself shows 1 m above its surface at the place's depth (it runs on past 2.5x as far)
+            if f.side != "ahead" or 2.5 * f.distance_m > scene.ahead_length_m:
+                continue
+            x, y = STREET_CAMERA.project(0.5, 1.0, f.distance_m)
+            assert img.getpixel((int(x), int(y))) in (ROAD, LANE), (node, f.place_id, describe(scene))
+            checked += 1
+    assert checked >= 2

@@ -110,6 +110,15 @@ def _draw_sign(draw: ImageDraw.ImageDraw, cam: Camera, side: str, z: float, text
     cues.add(f"sign:{text}")
 
 
+def drawn_side(scene: Scene, f: Frontage, far: float) -> str:
+    """The side a place's front is drawn on: its own, except that a place straight ahead along a street that
+    goes on past it stands beside that street (on the side of the axis it is on), not across the road: the
+    text says the street continues there."""
+    if f.side == "ahead" and scene.road_ahead and f.distance_m < far:
+        return "right" if f.rel_angle >= 0 else "left"
+    return f.side
+
+
 def _wall(f: Frontage) -> tuple[int, int, int] | None:
     """The wall colour of the material a place's description names (None: its style's or a random tone)."""
     return MATERIAL_WORDS.get(material_of(f.hint))
@@ -164,8 +173,8 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
     # Facades, far to near, both sides.
     landmarks: dict[str, list[Frontage]] = {"left": [], "right": []}
     for f in scene.frontages:
-        if f.side in landmarks:
-            landmarks[f.side].append(f)
+        if drawn_side(scene, f, far) in landmarks:
+            landmarks[drawn_side(scene, f, far)].append(f)
     pieces: list[tuple[float, str, float, float, Frontage | None]] = []
     for side in ("left", "right"):
         for z0, z1 in _side_segments(scene, side, far):
@@ -185,7 +194,7 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
         if f.place_id in placed or not has_look(f):
             continue
         z = min(max(f.distance_m, 4.0), max(far, 4.0))
-        pieces.append((z, f.side if f.side != "ahead" else "ahead", z - 8, z + 8, f))
+        pieces.append((z, drawn_side(scene, f, far), z - 8, z + 8, f))
         placed.add(f.place_id)
     # The places at this node that lie this way replace the ordinary fronts where they stand (here_view).
     blocked, here_ids = blocked_near(scene), {f.place_id for f in scene.here}
@@ -234,10 +243,10 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
             cues.add(f"facade:{lm.place_id}")
             cues |= {f"detail:{lm.place_id}:{d}" for d in draw_details(draw, quad, lm.hint)}
     for f in sorted(scene.frontages, key=lambda f: -f.distance_m):
-        if f.sign and f.side in ("left", "right"):
-            _draw_sign(draw, cam, f.side, f.distance_m, f.sign, _sign_colour(f.sign), cues)
-        elif f.sign and f.side == "ahead":
-            _draw_sign(draw, cam, "right", f.distance_m, f.sign, _sign_colour(f.sign), cues)
+        if f.sign:
+            side = drawn_side(scene, f, far)
+            _draw_sign(draw, cam, side if side != "ahead" else "right", f.distance_m, f.sign,
+                       _sign_colour(f.sign), cues)
     draw_here(draw, scene, cam, rng, cues, windows)
     if scene.street_signs:
         _street_sign(draw, cam, scene.street_signs, cues)
