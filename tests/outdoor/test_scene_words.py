@@ -189,3 +189,20 @@ def test_a_view_with_no_street_ahead_puts_nothing_off_the_street_ahead(world):
                 assert "street ahead" not in text, text
                 closed += 1
     assert closed > 20
+
+
+def test_a_view_closed_by_building_fronts_names_nothing_behind_them(world):
+    # oracle walk (navigation-manhattan-026), Broadway at West 29th Street facing east: "a row of building
+    # fronts across the sidewalk", then a church 160 m away, which the picture pasted into that row.
+    graph = world.city("manhattan")
+    scene = compute_scene(world, graph, graph.index["mn-d88f044015"], 98.0, "right")
+    assert not scene.road_ahead and not scene.open_space
+    assert "church" not in describe(scene) and scene.frontages == []
+    listed = 0
+    for i in range(0, len(graph.ids), 4):
+        for *_, h in graph.adj[i][:1]:
+            scene = compute_scene(world, graph, i, (h + 90) % 360, "right")
+            if not scene.road_ahead and not scene.open_space:
+                assert all(f.distance_m <= 40.0 for f in scene.frontages), describe(scene)
+                listed += len(scene.frontages)
+    assert listed > 0  # the fronts across the street, and what stands at them, are still named

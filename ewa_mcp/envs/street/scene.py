@@ -123,6 +123,9 @@ def places_here(world: World, graph: CityGraph, i: int, heading: float) -> list[
     return out
 
 
+# Where no street continues, the fronts across the street stand within this depth (the renderer draws a
+# place up to it straight ahead as the front across; street_view.render_cues): nothing farther is in sight.
+CLOSED_VIEW_DEPTH_M = 40.0
 HERE_HALF_ANGLE = 45.0  # four views 90° apart: each place at a node falls in (at least) one of them
 
 
@@ -275,6 +278,8 @@ def compute_scene(world: World, graph: CityGraph, i: int, heading: float, label:
     scene.skyline = _unhidden(scene.skyline)
     if not scene.road_ahead and not scene.open_space:
         scene.skyline = []  # building fronts across the sidewalk, a few metres away, hide every far tower
+        # and every place behind them: only those up to the fronts across the street are in sight
+        scene.frontages = [f for f in scene.frontages if f.distance_m <= CLOSED_VIEW_DEPTH_M]
     scene.frontages.sort(key=lambda f: f.range_m)
     scene.skyline.sort(key=lambda s: -s.distance_m)
     streets = graph.node_streets[i]
