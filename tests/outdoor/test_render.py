@@ -92,3 +92,20 @@ def test_a_place_straight_ahead_on_a_street_that_goes_on_does_not_block_it(world
             assert img.getpixel((int(x), int(y))) in (ROAD, LANE), (node, f.place_id, describe(scene))
             checked += 1
     assert checked >= 2
+
+
+def test_a_place_described_as_tiny_or_low_is_drawn_low(world):
+    # oracle walk (navigation-pittsburgh-034's park): "a tiny five-sided brick fort building" was drawn as a
+    # 20-30 m block. A place of unknown height whose description makes it low is drawn two storeys high.
+    from ewa_mcp.envs.street import here_view
+    from ewa_mcp.envs.street.facades import STREET_CAMERA
+    from ewa_mcp.envs.street.scene import LOW_HEIGHT_M, stated_low
+
+    graph = world.city("pittsburgh")
+    fort = world.places["poi-pittsburgh-fort-pitt-block-house"]
+    scene = compute_scene(world, graph, graph.index[fort.node], fort.heading_from_node, "front")
+    here = next(f for f in scene.here if f.place_id == fort.id)
+    assert stated_low(here) and here_view._height(here, STREET_CAMERA, 10.0) == LOW_HEIGHT_M
+    tower = next(p for p in world.places.values() if p.city == "pittsburgh" and (p.facts.get("height_m") or 0) > 100)
+    tall = compute_scene(world, graph, graph.index[tower.node], tower.heading_from_node or 0.0, "front")
+    assert not any(stated_low(f) for f in tall.here if f.place_id == tower.id)

@@ -433,6 +433,16 @@ def park_features(hint: str) -> set[str]:
     return {"lawn", "trees"} | {name for name, words in PARK_WORDS.items() if any(w in text for w in words)}
 
 
+# Words by which a description makes a building low; one of unknown height is drawn this tall (two storeys)
+# instead of as a tower block, so that "a tiny brick fort" is not drawn six storeys high.
+LOW_WORDS = re.compile(r"\b(tiny|one-storey|single-storey|two-storey|low building|long,? low)\b")
+LOW_HEIGHT_M = 8.0
+
+
+def stated_low(f: Frontage) -> bool:
+    return not f.height_m and bool(LOW_WORDS.search(f.hint.lower()))
+
+
 def has_look(f: Frontage) -> bool:
     """Whether a place's front is drawn in its own look (a style, a named detail or a material)."""
     return bool(f.style or details_of(f.hint) or material_of(f.hint))

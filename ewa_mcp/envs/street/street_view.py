@@ -26,7 +26,8 @@ from ewa_mcp.street_drawing.text import bundled_font
 from .here_view import blocked_near, draw_here, park_here
 from .facades import (AHEAD_END_WALL, FACADE_X_M, LANE, ROAD, ROAD_HALF_M, SIDEWALK, SKY, SKY_TOP, STREET_CAMERA,
                       STYLE_PALETTES, _capped_height, _sign_colour, _style_key, draw_details, draw_facade)
-from .scene import MATERIAL_WORDS, OPEN_SPACE_KINDS, SKYLINE_SHOWN, Frontage, Scene, has_look, material_of
+from .scene import (LOW_HEIGHT_M, MATERIAL_WORDS, OPEN_SPACE_KINDS, SKYLINE_SHOWN, Frontage, Scene, has_look,
+                    material_of, stated_low)
 
 
 
@@ -214,7 +215,7 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
                 cues.add(f"facade:{lm.place_id}")
                 cues |= {f"detail:{lm.place_id}:{d}" for d in draw_details(draw, low, lm.hint)}
                 continue
-            height = min(80.0, max(18.0, lm.height_m or 30.0))
+            height = LOW_HEIGHT_M if stated_low(lm) else min(80.0, max(18.0, lm.height_m or 30.0))
             if windows and not lm.height_m:
                 height = _capped_height(height, cam, None, z, z, windows)
             quad = [cam.project(cx - 12, 0, z), cam.project(cx - 12, height, z), cam.project(cx + 12, height, z),
@@ -233,7 +234,8 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
             cues.add(f"facade:{lm.place_id}")
             cues |= {f"detail:{lm.place_id}:{d}" for d in draw_details(draw, low, lm.hint)}
             continue
-        height = rng.uniform(12, 40) if lm is None else min(80.0, max(18.0, (lm.height_m or 30.0)))
+        height = (rng.uniform(12, 40) if lm is None else LOW_HEIGHT_M if stated_low(lm)
+                  else min(80.0, max(18.0, (lm.height_m or 30.0))))
         if windows and (lm is None or not lm.height_m):  # a place of unknown height is no taller than needed
             height = _capped_height(height, cam, x, z0, z1, windows)
         quad = [cam.project(x, 0, z0), cam.project(x, height, z0), cam.project(x, height, z1), cam.project(x, 0, z1)]
