@@ -69,3 +69,43 @@ def test_the_details_a_description_names_are_drawn(world):
     for f in scene.frontages + scene.here:  # the place drawn close up at its node reads the hint too
         f.hint = "a plain building"
     assert not any(colour == LION for _, colour in render(scene).getcolors(maxcolors=1 << 16))
+
+
+def test_a_place_straight_ahead_on_a_street_that_goes_on_does_not_block_it(world):
+    # oracle walk (shopping-pair-023), Broadway north at West 27th Street: the text says Broadway goes on
+    # 250 m and the 28 St station is "straight ahead, 52 m away"; the picture drew the station as a
+    # building front across the road at 52 m, as if the street ended there.
+    from ewa_mcp.envs.street.facades import LANE, ROAD, STREET_CAMERA
+    from ewa_mcp.envs.street.street_view import render
+
+    graph = world.city("manhattan")
+    checked = 0
+    for node, heading in (("mn-f682acba60", 8.0), ("mn-289c60f1ba", 8.0), ("mn-45058621c3", 9.0)):
+        scene = compute_scene(world, graph, graph.index[node], heading, "front")
+        assert scene.road_ahead
+        img = render(scene)
+        for f in scene.frontages:
+            # where the road itself shows 1 m above its surface at the place's depth (it runs on past 2.5x as far)
+            if f.side != "ahead" or 2.5 * f.distance_m > scene.ahead_length_m:
+                continue
+            x, y = STREET_CAMERA.project(0.5, 1.0, f.distance_m)
+            assert img.getpixel((int(x), int(y))) in (ROAD, LANE), (node, f.place_id, describe(scene))
+            checked += 1
+    assert checked >= 2
+
+
+def test_a_place_described_as_tiny_or_low_is_drawn_low(world):
+    # oracle walk (navigation-pittsburgh-034's park): "a tiny five-sided brick fort building" was drawn as a
+    # 20-30 m block. A place of unknown height whose description makes it low is drawn two storeys high.
+    from ewa_mcp.envs.street import here_view
+    from ewa_mcp.envs.street.facades import STREET_CAMERA
+    from ewa_mcp.envs.street.scene import LOW_HEIGHT_M, stated_low
+
+    graph = world.city("pittsburgh")
+    fort = world.places["poi-pittsburgh-fort-pitt-block-house"]
+    scene = compute_scene(world, graph, graph.index[fort.node], fort.heading_from_node, "front")
+    here = next(f for f in scene.here if f.place_id == fort.id)
+    assert stated_low(here) and here_view._height(here, STREET_CAMERA, 10.0) == LOW_HEIGHT_M
+    tower = next(p for p in world.places.values() if p.city == "pittsburgh" and (p.facts.get("height_m") or 0) > 100)
+    tall = compute_scene(world, graph, graph.index[tower.node], tower.heading_from_node or 0.0, "front")
+    assert not any(stated_low(f) for f in tall.here if f.place_id == tower.id)

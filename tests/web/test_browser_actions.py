@@ -115,6 +115,40 @@ async def test_type_refusals_leave_the_page_unchanged(web_services):
     assert "textbox 'Code' value: 'R-17'" in obs.text and obs.data["site_url"] == "fixture:/"
 
 
+async def test_type_into_what_takes_no_text_is_refused_naming_it(web_services):
+    # play-test: on the map's form a type into a label's id filled the field it labels, and one into a
+    # button was reported as doing nothing. Every control that takes no text is refused by name, with
+    # what to do instead, and the page is left as it was.
+    env = await open_env(web_services, "fixture:/form")
+    obs = await env.observe()
+    typed = await env.type(str(element_id(obs, "StaticText", "Your name")), "Ada")
+    assert "textbox 'Your name' focused: True value: 'Ada'" in typed.text  # a label's text types into its field
+    fields = r"editable elements here: \[\d+\] textbox 'Your name', \[\d+\] spinbutton 'Quantity'"
+    refused = {
+        ("button", "Go ahead"): rf"button 'Go ahead' is a button and does not accept text; type into a text field "
+                                rf"instead — {fields}; press a button with browser_click",
+        ("StaticText", "Go ahead"): rf"StaticText 'Go ahead' is the label of a button 'Go ahead' and does not "
+                                    rf"accept text; .*{fields}",
+        ("button", "Send form"): r"button 'Send form' is a button and does not accept text",
+        ("radio", "Small size"): r"radio 'Small size' is a radio button and does not accept text; choose it "
+                                 r"with browser_click",
+        ("StaticText", "I agree"): r"StaticText 'I agree' is the label of a checkbox 'I agree' and does not accept "
+                                   r"text; tick or untick it with browser_click",
+        ("checkbox", "I agree"): r"checkbox 'I agree' is a checkbox and does not accept text",
+        ("spinbutton", "Quantity"): r"spinbutton 'Quantity' takes a number only, and 'two' is not one",
+    }
+    for (role, name), message in refused.items():
+        ref = element_id(obs, role, name)
+        with pytest.raises(EnvError, match=rf"^\[{ref}\] {message}"):
+            await env.type(f"[{ref}]", "two", press_enter=True)
+    assert "value: '3'" in (await env.type("spinbutton 'Quantity'", "3")).text
+    after = await env.observe()
+    assert after.data["site_url"] == "fixture:/form"
+    assert "textbox 'Your name' value: 'Ada'" in after.text
+    assert "radio 'Small size' checked: false" in after.text and "checkbox 'I agree' checked: false" in after.text
+    await env.close()
+
+
 async def test_type_chooses_drop_down_options(web_services):
     env = await open_env(web_services)
     chosen = await env.type("combobox 'Diet'", "vegan")

@@ -74,6 +74,20 @@ document.getElementById('ping').addEventListener('click', () => fetch('/api/clic
 <p><button onclick="location.href='http://example.com/scripted'">Leave by script</button></p>
 """)
 
+    async def form(request: Request) -> Response:
+        # labels of text fields and of controls that take no text (a type into each, tests/web/test_browser_actions.py)
+        return _page("Fixture form", """
+<h1>Order form</h1>
+<form action='/search' method='get' aria-label='Order' style='display: grid; grid-template-columns: auto 1fr'>
+<label for='f-name'>Your name</label> <input id='f-name' name='q'>
+<label for='f-go'>Go ahead</label> <button id='f-go' type='submit'>Find it</button>
+<input type='submit' value='Send form'>
+<label><input type='radio' name='size' value='s'> Small size</label>
+<label for='f-agree'>I agree</label> <input type='checkbox' id='f-agree'>
+<input type='number' aria-label='Quantity' value='1'>
+</form>
+""")
+
     async def offsite(request: Request) -> Response:
         return _page("Off-site resources", "<h1>Off-site resources</h1>"
                                            "<img src='http://example.com/tracker.png' alt='tracker'>"
@@ -167,7 +181,7 @@ document.getElementById('ping').addEventListener('click', () => fetch('/api/clic
         Route("/", index), Route("/item/{n:int}", item), Route("/search", search), Route("/counter", counter),
         Route("/api/click", api_click, methods=["POST"]), Route("/long", long_page), Route("/download", download),
         Route("/redirect-out", redirect_out), Route("/offsite", offsite), Route("/webrtc", webrtc),
-        Route("/busy", busy),
+        Route("/busy", busy), Route("/form", form),
     ])
 
 

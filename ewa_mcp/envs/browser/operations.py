@@ -17,7 +17,7 @@ from playwright.async_api import TimeoutError as PlaywrightTimeoutError
 from ewa_mcp.core.environment import EnvError, Observation
 from .aria import AriaNode
 from .observation import collect, observe, present
-from .tree_text import EDITABLE_ROLES
+from .tree_text import EDITABLE_ROLES, FOLD_WHEN_NAMELESS
 from .safety import BlockedUrlError
 from .session import BrowserSession, PageBusyError
 from .settle import CHANGES_JS
@@ -32,6 +32,59 @@ SCROLL_JS = """(dir) => {
   window.scrollBy({left: dx, top: dy, behavior: 'instant'});
   return [x !== scrollX || y !== scrollY, Math.round(scrollY), document.documentElement.scrollHeight, innerHeight];
 }"""
+
+
+# What a type lands in, found as Playwright's fill finds it: from text inside a button to the button, from a label
+# (or text in one) to the control it labels. A control that is no text field is refused by name, before the fill.
+TYPE_TARGET_JS = """(node) => {
+  let e = node.nodeType === 1 ? node : node.parentElement;
+  const via = e;
+  if (!e.matches('input, textarea, select') && !e.isContentEditable)
+    e = e.closest('button, [role=button], [role=checkbox], [role=radio]') || e;
+  if (!e.matches('input, textarea, select, [contenteditable]') && !e.getAttribute('role')) {
+    const label = e.closest('label');
+    if (label && label.control) e = label.control;
+  }
+  return {tag: e.localName, type: (e.getAttribute('type') || '').toLowerCase(), role: e.getAttribute('role') || '',
+          label: e !== via && via.closest('label') !== null && via.closest('label').control === e,
+          text: ((e.labels && e.labels[0] && e.labels[0].textContent) || e.getAttribute('aria-label') || e.value
+                 || e.textContent || '').trim().replace(/\\s+/g, ' ').slice(0, 60)};
+}"""
+# Input types whose value is text of some kind (fill types into them, or sets a date, colour or number).
+TEXT_INPUT_TYPES = frozenset({"", "text", "email", "number", "password", "search", "tel", "url", "date", "time",
+                              "datetime-local", "month", "week", "color", "range"})
+BUTTON_INPUT_TYPES = frozenset({"submit", "button", "reset", "image"})
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text.strip())
+    except ValueError:
+        return False
+    return True
+
+
+def type_refusal(desc: str, target: dict[str, Any], text: str, fields: str) -> str | None:
+    """Why typing ``text`` into ``desc`` cannot work, given what it lands in (TYPE_TARGET_JS); None where it
+    can. ``fields``: the page's text fields, as the refusal lists them."""
+    tag, kind, role = target.get("tag", ""), target.get("type", ""), target.get("role", "")
+    if tag == "input" and kind == "number" and text.strip() and not _is_number(text):
+        return f"{desc} takes a number only, and {text!r} is not one; type digits such as 2"
+    if tag == "input" and kind in TEXT_INPUT_TYPES or tag in ("textarea", "select"):
+        return None
+    radio = "radio" in (kind, role)
+    if tag == "input" and kind in ("checkbox", "radio") or role in ("checkbox", "radio"):
+        what, todo = ("a radio button", "choose it") if radio else ("a checkbox", "tick or untick it")
+        todo = f"{todo} with browser_click"
+    elif tag == "input" and kind in BUTTON_INPUT_TYPES or tag == "button" or role == "button":
+        what, todo = "a button", f"type into a text field instead{fields}; press a button with browser_click"
+    elif tag == "input" and kind == "file":
+        what, todo = "a file chooser", "files cannot be chosen in this browser"
+    else:
+        return None
+    if target.get("label"):  # the reference is a label's text: name the control it labels
+        what = f"the label of {what}" + (f" '{target['text']}'" if target.get("text") else "")
+    return f"{desc} is {what} and does not accept text; {todo}"
 
 
 # How long a refused navigation's error page may take to commit past the action's own deadline on a loaded machine
@@ -55,6 +108,9 @@ def input_dispatched(exc: BaseException) -> bool:
 
 
 def describe(node: AriaNode, element_id: int) -> str:
+    """The element as the observation shows it: a nameless container of one text as its StaticText."""
+    if not node.name and node.role in FOLD_WHEN_NAMELESS and node.text and node.attrs.get("cursor") != "pointer":
+        return f"[{element_id}] StaticText '{' '.join(node.text.split())}'"
     return f"[{element_id}] {node.role}" + (f" '{node.name}'" if node.name else "")
 
 
@@ -239,17 +295,24 @@ class BrowserActions:
             if tag == "select":
                 await self._select(locator, node, desc, text)
             else:
+                fields = [f"[{tab.ref_ids[n.ref]}] {n.role} '{n.name}'" for n in tab.nodes
+                          if n.ref in tab.ref_ids and n.role in EDITABLE_ROLES][:10]
+                listed = (f" — editable elements here: {', '.join(fields)}" if fields else
+                          " (this page has no editable elements)")
+                try:
+                    target = await s.bounded(locator.evaluate(TYPE_TARGET_JS))
+                except PlaywrightError:
+                    target = {}  # no element behind the reference: is_editable below refuses it
+                refusal = type_refusal(desc, target, text, listed)
+                if refusal:
+                    raise EnvError(refusal)
                 try:
                     editable = await locator.is_editable()
                 except PlaywrightError:
                     editable = False  # not an input, textarea or contenteditable element at all
                 if not editable:
-                    fields = [f"[{tab.ref_ids[n.ref]}] {n.role} '{n.name}'" for n in tab.nodes
-                              if n.ref in tab.ref_ids and n.role in EDITABLE_ROLES][:10]
                     why = "is read-only" if node.role in EDITABLE_ROLES else "does not accept text"
-                    raise EnvError(f"{desc} {why}; type into a text field instead"
-                                   + (f" — editable elements here: {', '.join(fields)}" if fields else
-                                      " (this page has no editable elements)"))
+                    raise EnvError(f"{desc} {why}; type into a text field instead{listed}")
                 await locator.fill(text)
             if press_enter:
                 await locator.press("Enter")

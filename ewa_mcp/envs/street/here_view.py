@@ -18,6 +18,7 @@ from PIL import ImageDraw
 from ewa_mcp.street_drawing.camera import Camera
 from ewa_mcp.street_drawing.text import bundled_font
 from .scene import (
+    LOW_HEIGHT_M,
     MATERIAL_WORDS,
     OPEN_SPACE_KINDS,
     SIGN_KINDS,
@@ -28,6 +29,7 @@ from .scene import (
     material_of,
     park_features,
     sign_colour_of,
+    stated_low,
 )
 from .facades import FACADE_X_M, ROAD_HALF_M, _capped_height, _sign_colour, draw_details, draw_facade
 
@@ -96,7 +98,7 @@ def _in_sight(cam: Camera, z: float, room: float) -> float:
 def _height(f: Frontage, cam: Camera, z: float) -> float:
     """A place's front height; lowered into sight where its roof carries what its description names (a
     steeple, gables, a cupola), so that the roof line and those are in the picture."""
-    h = min(80.0, max(12.0, f.height_m or 20.0))
+    h = LOW_HEIGHT_M if stated_low(f) else min(80.0, max(12.0, f.height_m or 20.0))
     return min(h, _in_sight(cam, z, 0.4)) if details_of(f.hint) & ROOF_DETAILS else h
 
 

@@ -42,6 +42,9 @@ class Frontage:
     height_m: float | None
     hint: str  # a visual description without the name
     place_id: str
+    # Its node lies on the street ahead and its entrance to one side of it: ``side`` is then the side of that
+    # street as a walker there facing the same way is told it ("on your left"), not the side of the view's axis.
+    on_street: bool = False
 
 
 @dataclass
@@ -76,6 +79,7 @@ class Scene:
     skyline: list[SkylineItem] = field(default_factory=list)
     street_signs: list[str] = field(default_factory=list)
     open_space: str = ""  # a park's look where it lies across the sidewalk this way ("" for none)
+    in_park: bool = False  # the node is on a path through a park: no building fronts line the street ahead
     seed: int = 0
     # The places at this very node whose entrance lies within HERE_HALF_ANGLE of this view: what the text
     # mode's "Right here:" line names, drawn close up facing the camera (describe never reads this).
@@ -119,6 +123,9 @@ def places_here(world: World, graph: CityGraph, i: int, heading: float) -> list[
     return out
 
 
+# Where no street continues, the fronts across the street stand within this depth (the renderer draws a
+# place up to it straight ahead as the front across; street_view.render_cues): nothing farther is in sight.
+CLOSED_VIEW_DEPTH_M = 40.0
 HERE_HALF_ANGLE = 45.0  # four views 90° apart: each place at a node falls in (at least) one of them
 
 
@@ -147,10 +154,35 @@ OPEN_SPACE_MIN_REACH_M = 120.0  # a small park is seen this far from its centre;
 OPEN_SPACE_MARGIN_M = 60.0  # its centre lies as far inside as from its street node, plus this
 
 
+# A street named for a park with one of these words runs through it ("Point State Park Promenade"); one
+# named for it otherwise may run along its edge ("Union Square East").
+PARK_PATH_WORDS = ("promenade", "path", "walk", "trail", "esplanade", "mall")
+
+
+def park_around(world: World, graph: CityGraph, i: int) -> Place | None:
+    """The park a node lies inside: every street there is a path through that park."""
+    streets = graph.node_streets[i]
+    if not streets:
+        return None
+    cache: dict[str, list[Place]] = world.__dict__.setdefault("_parks", {})
+    if graph.city not in cache:
+        cache[graph.city] = sorted((p for p in world.places.values()
+                                    if p.city == graph.city and p.kind in OPEN_SPACE_KINDS), key=lambda p: p.id)
+    for p in cache[graph.city]:
+        if all(p.name in s and any(w in s.lower().split() for w in PARK_PATH_WORDS) for s in streets):
+            return p
+    return None
+
+
 def open_space_this_way(world: World, graph: CityGraph, i: int, heading: float) -> str:
     """The look of a park lying this way beside the street (its centre within reach and within 45° of
     the view): a view across it shows lawns and trees, not building fronts. The data has no park
-    outlines, so a park's reach is judged from how far its centre lies from its street node."""
+    outlines, so a park's reach is judged from how far its centre lies from its street node. Inside a
+    park (on its paths, park_around) it lies every way: its centre may be a few metres off, in any
+    direction, and still the ground all around is the park's."""
+    inside = park_around(world, graph, i)
+    if inside is not None:
+        return inside.description_hint or "an open park with lawns and trees"
     lat0, lng0 = graph.lat[i], graph.lng[i]
     best: tuple[float, str] | None = None
     for p in world.places.values():
@@ -171,11 +203,15 @@ def compute_scene(world: World, graph: CityGraph, i: int, heading: float, label:
     scene = Scene(graph.city, node_id, heading % 360.0, label, False, None, 0.0, seed=seed)
     # The street ahead: follow the straightest continuation while it stays within 20 degrees.
     ahead = [(j, length, s, h) for j, length, s, h in graph.adj[i] if abs(angle_diff(h, heading)) <= 30.0]
+    # The nodes of the street ahead, each with the heading one walks it at there (its side of the street is
+    # told against that heading: a street that bends carries its fronts off the view's straight axis).
+    street_heading: dict[int, float] = {i: heading % 360.0}
     if ahead:
         j, length, s, h = min(ahead, key=lambda link: abs(angle_diff(link[3], heading)))
         scene.road_ahead = True
         scene.ahead_street = graph.streets[s]
         travelled, prev, cur, cur_h = length, i, j, h
+        street_heading[j] = h
         while travelled < AHEAD_LOOK_M:
             for k, _, s2, h2 in graph.adj[cur]:
                 rel = angle_diff(h2, cur_h)
@@ -198,6 +234,7 @@ def compute_scene(world: World, graph: CityGraph, i: int, heading: float, label:
             k, ln, _, h2 = min(straight, key=lambda link: abs(angle_diff(link[3], cur_h)))
             prev, cur, cur_h = cur, k, h2
             travelled += ln
+            street_heading.setdefault(cur, cur_h)
         scene.ahead_length_m = round(min(travelled, AHEAD_LOOK_M), 1)
     lat0, lng0 = graph.lat[i], graph.lng[i]
     for p in world.places.values():
@@ -220,24 +257,53 @@ def compute_scene(world: World, graph: CityGraph, i: int, heading: float, label:
         height = p.facts.get("height_m")
         if not far:
             side = "ahead" if abs(rel) < 8.0 else ("right" if rel > 0 else "left")
-            scene.frontages.append(Frontage(side, round(max(along, 3.0), 1), round(abs(lateral), 1), round(d, 1),
-                                            round(rel, 1), p.kind, p.name if p.kind in SIGN_KINDS else None,
-                                            _style(p), float(height) if height else None, p.description_hint, p.id))
+            on_street = scene.road_ahead and graph.index.get(p.node, -1) in street_heading
+            street_side = _street_side(graph, p, street_heading) if on_street else None
+            if street_side:
+                side = street_side
+            elif on_street:  # its node says "ahead of you" / "behind you": beside the street only near its axis
+                on_street = side != "ahead" and abs(lateral) <= STREET_SIDE_M
+            scene.frontages.append(Frontage(side, round(max(along, 3.0), 1), round(abs(lateral), 1),
+                                            round(d, 1), round(rel, 1), p.kind,
+                                            p.name if p.kind in SIGN_KINDS else None, _style(p),
+                                            float(height) if height else None, p.description_hint, p.id,
+                                            on_street=on_street))
         elif (height and float(height) >= SKYLINE_MIN_HEIGHT_M and d <= SKYLINE_RANGE_M and abs(rel) <= 40.0
               and seen_over_roofs(rel, d, float(height))):
             scene.skyline.append(SkylineItem(round(rel, 1), round(d, 1), float(height), _style(p),
                                              p.description_hint, p.id))
     scene.open_space = open_space_this_way(world, graph, i, heading)
+    scene.in_park = park_around(world, graph, i) is not None
     scene.here = places_in_view_here(world, graph, i, heading)
     scene.skyline = _unhidden(scene.skyline)
     if not scene.road_ahead and not scene.open_space:
         scene.skyline = []  # building fronts across the sidewalk, a few metres away, hide every far tower
+        # and every place behind them: only those up to the fronts across the street are in sight
+        scene.frontages = [f for f in scene.frontages if f.distance_m <= CLOSED_VIEW_DEPTH_M]
     scene.frontages.sort(key=lambda f: f.range_m)
     scene.skyline.sort(key=lambda s: -s.distance_m)
     streets = graph.node_streets[i]
     if len(streets) >= 2:
         scene.street_signs = list(streets)
     return scene
+
+
+STREET_SIDE_M = 20.0  # an entrance this close to the view's axis is beside the street ahead, not off it
+
+
+def _street_side(graph: CityGraph, p: Place, street_heading: dict[int, float]) -> str | None:
+    """The side of the street ahead a place's entrance is on, as places_here words it at the place's node for
+    one walking the street there ("on your left"); None where its entrance lies along the street rather
+    than to one side (there the node says "ahead of you" or "behind you")."""
+    if p.heading_from_node is None:
+        return None
+    h = street_heading.get(graph.index.get(p.node, -1))
+    if h is None:
+        return None
+    rel = angle_diff(p.heading_from_node, h)
+    if abs(rel) <= 30 or abs(rel) >= 150:
+        return None
+    return "right" if rel > 0 else "left"
 
 
 # The street's building fronts stand this far to either side (facades.FACADE_X_M), and the lowest
@@ -279,18 +345,18 @@ def opening_words(o: Opening) -> str:
     return f"{o.street} opens to the left and right {at}"
 
 
-STREET_SIDE_M = 20.0  # an entrance this close to the view's axis is on the street ahead, not off it
-
-
 def frontage_where(scene: Scene, f: Frontage) -> str:
     """Where a place is, in words that keep two meanings apart: the side of the street ahead (as the
-    map's "on your left" means it: the side of the street one walks along), or, for a place off that
-    street, the direction of sight."""
+    map's "on your left" means it: the side of the street one walks along), for a place whose node is on
+    that street; else the direction of sight. An entrance near the view's axis is not enough for the
+    first: one on a cross street at the corner, or across a bend, would be named on the wrong side."""
+    if scene.road_ahead and f.on_street:
+        return f"ahead on the {f.side}-hand side of {scene.ahead_street}"
     if f.side == "ahead":
         return "straight ahead"
-    if scene.road_ahead and f.lateral_m <= STREET_SIDE_M and f.distance_m <= scene.ahead_length_m + 10:
-        return f"ahead on the {f.side}-hand side of {scene.ahead_street}"
-    return f"off the street ahead, {int(round(abs(f.rel_angle)))}° to the {f.side} of straight ahead"
+    sight = f"{int(round(abs(f.rel_angle)))}° to the {f.side} of straight ahead"
+    # where no street continues this way there is no street ahead to be off
+    return f"off the street ahead, {sight}" if scene.road_ahead else sight
 
 
 def describe(scene: Scene) -> str:
@@ -365,6 +431,16 @@ def sign_colour_of(hint: str) -> tuple[int, int, int] | None:
 def park_features(hint: str) -> set[str]:
     text = hint.lower()
     return {"lawn", "trees"} | {name for name, words in PARK_WORDS.items() if any(w in text for w in words)}
+
+
+# Words by which a description makes a building low; one of unknown height is drawn this tall (two storeys)
+# instead of as a tower block, so that "a tiny brick fort" is not drawn six storeys high.
+LOW_WORDS = re.compile(r"\b(tiny|one-storey|single-storey|two-storey|low building|long,? low)\b")
+LOW_HEIGHT_M = 8.0
+
+
+def stated_low(f: Frontage) -> bool:
+    return not f.height_m and bool(LOW_WORDS.search(f.hint.lower()))
 
 
 def has_look(f: Frontage) -> bool:

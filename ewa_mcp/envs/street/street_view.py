@@ -26,7 +26,8 @@ from ewa_mcp.street_drawing.text import bundled_font
 from .here_view import blocked_near, draw_here, park_here
 from .facades import (AHEAD_END_WALL, FACADE_X_M, LANE, ROAD, ROAD_HALF_M, SIDEWALK, SKY, SKY_TOP, STREET_CAMERA,
                       STYLE_PALETTES, _capped_height, _sign_colour, _style_key, draw_details, draw_facade)
-from .scene import MATERIAL_WORDS, OPEN_SPACE_KINDS, SKYLINE_SHOWN, Frontage, Scene, has_look, material_of
+from .scene import (LOW_HEIGHT_M, MATERIAL_WORDS, OPEN_SPACE_KINDS, SKYLINE_SHOWN, Frontage, Scene, has_look,
+                    material_of, stated_low)
 
 
 
@@ -110,6 +111,15 @@ def _draw_sign(draw: ImageDraw.ImageDraw, cam: Camera, side: str, z: float, text
     cues.add(f"sign:{text}")
 
 
+def drawn_side(scene: Scene, f: Frontage, far: float) -> str:
+    """The side a place's front is drawn on: its own, except that a place straight ahead along a street that
+    goes on past it stands beside that street (on the side of the axis it is on), not across the road: the
+    text says the street continues there."""
+    if f.side == "ahead" and scene.road_ahead and f.distance_m < far:
+        return "right" if f.rel_angle >= 0 else "left"
+    return f.side
+
+
 def _wall(f: Frontage) -> tuple[int, int, int] | None:
     """The wall colour of the material a place's description names (None: its style's or a random tone)."""
     return MATERIAL_WORDS.get(material_of(f.hint))
@@ -134,6 +144,9 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
     end = max(end, 16.0)
     far = min(end, 240.0)
     if scene.road_ahead:
+        if scene.in_park:  # the park goes on past the path's end: lawn to the horizon, no building fronts
+            draw.polygon([cam.project(-400, 0, 2.0), cam.project(-400, 0, 2000), cam.project(400, 0, 2000),
+                          cam.project(400, 0, 2.0)], fill=(96, 150, 72))
         road = [cam.project(-ROAD_HALF_M, 0, 2.0), cam.project(-ROAD_HALF_M, 0, far), cam.project(ROAD_HALF_M, 0, far),
                 cam.project(ROAD_HALF_M, 0, 2.0)]
         draw.polygon(road, fill=ROAD)
@@ -147,7 +160,7 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
                               cam.project(sgn * 60, 0, o.distance_m + 6), cam.project(sgn * ROAD_HALF_M, 0, o.distance_m + 6)],
                              fill=ROAD)
                 cues.add(f"opening:{o.side}:{round(o.distance_m)}")
-        if far < AHEAD_END_WALL:
+        if far < AHEAD_END_WALL and not scene.in_park:
             _end_wall(draw, cam, far + 12, rng, windows=windows)
     elif scene.open_space or park_here(scene):
         cues.add("road_ends")
@@ -161,8 +174,8 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
     # Facades, far to near, both sides.
     landmarks: dict[str, list[Frontage]] = {"left": [], "right": []}
     for f in scene.frontages:
-        if f.side in landmarks:
-            landmarks[f.side].append(f)
+        if drawn_side(scene, f, far) in landmarks:
+            landmarks[drawn_side(scene, f, far)].append(f)
     pieces: list[tuple[float, str, float, float, Frontage | None]] = []
     for side in ("left", "right"):
         for z0, z1 in _side_segments(scene, side, far):
@@ -182,7 +195,7 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
         if f.place_id in placed or not has_look(f):
             continue
         z = min(max(f.distance_m, 4.0), max(far, 4.0))
-        pieces.append((z, f.side if f.side != "ahead" else "ahead", z - 8, z + 8, f))
+        pieces.append((z, drawn_side(scene, f, far), z - 8, z + 8, f))
         placed.add(f.place_id)
     # The places at this node that lie this way replace the ordinary fronts where they stand (here_view).
     blocked, here_ids = blocked_near(scene), {f.place_id for f in scene.here}
@@ -202,7 +215,7 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
                 cues.add(f"facade:{lm.place_id}")
                 cues |= {f"detail:{lm.place_id}:{d}" for d in draw_details(draw, low, lm.hint)}
                 continue
-            height = min(80.0, max(18.0, lm.height_m or 30.0))
+            height = LOW_HEIGHT_M if stated_low(lm) else min(80.0, max(18.0, lm.height_m or 30.0))
             if windows and not lm.height_m:
                 height = _capped_height(height, cam, None, z, z, windows)
             quad = [cam.project(cx - 12, 0, z), cam.project(cx - 12, height, z), cam.project(cx + 12, height, z),
@@ -212,13 +225,17 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
             cues |= {f"detail:{lm.place_id}:{d}" for d in draw_details(draw, quad, lm.hint)}
             continue
         x = FACADE_X_M if side == "right" else -FACADE_X_M
+        if lm is None and scene.in_park:  # a path through a park: lawns and trees either side, no fronts
+            _park_stretch(draw, cam, x, z0, z1)
+            continue
         if lm is not None and lm.kind in OPEN_SPACE_KINDS:  # a park along the street: lawn and trees, no front
             _park_stretch(draw, cam, x, z0, z1)
             low = [cam.project(x, 0, z0), cam.project(x, 8.0, z0), cam.project(x, 8.0, z1), cam.project(x, 0, z1)]
             cues.add(f"facade:{lm.place_id}")
             cues |= {f"detail:{lm.place_id}:{d}" for d in draw_details(draw, low, lm.hint)}
             continue
-        height = rng.uniform(12, 40) if lm is None else min(80.0, max(18.0, (lm.height_m or 30.0)))
+        height = (rng.uniform(12, 40) if lm is None else LOW_HEIGHT_M if stated_low(lm)
+                  else min(80.0, max(18.0, (lm.height_m or 30.0))))
         if windows and (lm is None or not lm.height_m):  # a place of unknown height is no taller than needed
             height = _capped_height(height, cam, x, z0, z1, windows)
         quad = [cam.project(x, 0, z0), cam.project(x, height, z0), cam.project(x, height, z1), cam.project(x, 0, z1)]
@@ -228,10 +245,10 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
             cues.add(f"facade:{lm.place_id}")
             cues |= {f"detail:{lm.place_id}:{d}" for d in draw_details(draw, quad, lm.hint)}
     for f in sorted(scene.frontages, key=lambda f: -f.distance_m):
-        if f.sign and f.side in ("left", "right"):
-            _draw_sign(draw, cam, f.side, f.distance_m, f.sign, _sign_colour(f.sign), cues)
-        elif f.sign and f.side == "ahead":
-            _draw_sign(draw, cam, "right", f.distance_m, f.sign, _sign_colour(f.sign), cues)
+        if f.sign:
+            side = drawn_side(scene, f, far)
+            _draw_sign(draw, cam, side if side != "ahead" else "right", f.distance_m, f.sign,
+                       _sign_colour(f.sign), cues)
     draw_here(draw, scene, cam, rng, cues, windows)
     if scene.street_signs:
         _street_sign(draw, cam, scene.street_signs, cues)
