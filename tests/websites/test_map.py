@@ -283,6 +283,31 @@ def test_a_place_written_with_its_address_in_brackets_is_found(world):
     assert adapter.resolve("Nowhere Hall (1 Nothing Road)").error.startswith("no place matches")
 
 
+def test_every_address_an_intent_gives_is_found_as_written(world):
+    """A traveling intent gives a landmark by its address ("6th Ave between W 40th St & W 42nd St"); written so,
+    the directions form finds the place that has it, in every task, though the street search cannot parse a
+    block or a corner with a cross street."""
+    import json
+
+    from ewa_mcp.core.paths import tasks_dir
+    from ewa_mcp.websites.map.places import WorldAdapter
+
+    adapter = WorldAdapter(world)
+    block = adapter.resolve("6th Ave between W 40th St & W 42nd St")
+    assert block.place is not None and block.place.address == "6th Ave between W 40th St & W 42nd St"
+    unresolved, checked = [], 0
+    for path in sorted((tasks_dir() / "traveling").glob("*.json")):
+        for task in json.loads(path.read_text(encoding="utf-8")):
+            place = world.places.get(task["metadata"].get("poi_id", ""))
+            if task["difficulty"] != "medium" or place is None or f"Walk to {place.address}:" not in task["intent"]:
+                continue
+            checked += 1
+            if adapter.resolve(place.address).place is None:
+                unresolved.append((task["id"], place.address))
+    assert checked >= 100 and not unresolved, (checked, unresolved)
+    assert adapter.resolve("6th Ave between W 40th St & W 99th St").error.startswith("no place matches")
+
+
 def test_a_place_written_with_its_city_is_found_in_that_city(world):
     """The search lists a place as "400 5th Ave, Pittsburgh"; written so (or with the state after the city) the
     directions form finds it, as a play-tester wrote it; a city that does not have it still finds nothing."""

@@ -79,6 +79,15 @@ class WorldAdapter:
                 found = self.resolve(part, city)
                 if found.place is not None:
                     return found
+        if not results:
+            # "6th Ave between W 40th St & W 42nd St", "Broadway & 6th Ave at W 35th St": an address written the
+            # way a place's own page writes it (a block or a corner with a cross street), which the street search
+            # does not parse; the place that has it, when one does.
+            wanted = " ".join(text.split()).casefold()
+            owners = [p for p in self.world.places.values() if p.address and (city is None or p.city == city)
+                      and " ".join(p.address.split()).casefold() == wanted]
+            if len(owners) == 1:
+                return Resolution(owners[0])
         if not results and city is None:
             # "400 5th Ave, Pittsburgh" (or "..., Pittsburgh, PA"), the way the search lists a place and people
             # write one: the address in that city.
