@@ -118,8 +118,9 @@ def _offset(city_key: str) -> int:
 
 
 def with_shared_streets(locations: Iterable[Location]) -> list[Location]:
-    """The locations, each hard one on one of its country's shared street names: a city's hard locations
-    take different names (in a seeded rotation), so no two of its tasks share an answer."""
+    """The locations, each hard one on one of its country's shared street names (its own where it already
+    is one): a city's hard locations take different names (in a seeded rotation), so no two of its tasks
+    share an answer."""
     locations = list(locations)
     hard = hard_city_keys(CITIES[loc.city_key] for loc in locations)
     taken: dict[str, int] = defaultdict(int)
@@ -132,6 +133,9 @@ def with_shared_streets(locations: Iterable[Location]) -> list[Location]:
         if not pool:
             raise ValueError(f"location {loc.id} ({loc.city_key}) is hard, but its country {loc.city.iso} has no "
                              f"shared street names: add some to SHARED_STREETS in shared_streets.py")
+        if loc.street in {street.name for street in pool}:
+            out.append(loc)  # its surveyed street already has a shared name (Avenida Juárez in Guadalajara)
+            continue
         pick = pool[(_offset(loc.city_key) + taken[loc.city_key]) % len(pool)]
         taken[loc.city_key] += 1
         out.append(replace(loc, street=pick.name, sign=pick.sign, street_aliases=pick.aliases))
