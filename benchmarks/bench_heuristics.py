@@ -57,6 +57,7 @@ def table(agent: str, run_dir: Path, tasks: list[Task], suite: list[Task]) -> st
     report = grade_run(run_dir)
     cells: dict[tuple[str, str], list[tuple[bool, float]]] = {}
     geo: dict[str, list[bool]] = {level: [] for level in LEVELS}
+    geo_city: dict[str, list[bool]] = {}  # per difficulty: the hard split must not be easier than the rest
     answers: dict[str, list[bool]] = {}
     for ep in report.episodes:
         cells.setdefault((ep.domain, ep.difficulty or "-"), []).append(
@@ -66,6 +67,7 @@ def table(agent: str, run_dir: Path, tasks: list[Task], suite: list[Task]) -> st
         if ep.geolocation:
             for level in LEVELS:
                 geo[level].append(ep.geolocation.get(level) is True)
+            geo_city.setdefault(ep.difficulty or "-", []).append(ep.geolocation.get("city") is True)
     lines = [f"## {agent}", "", "| domain | difficulty | n | overall % | completion % |", "|---|---|---|---|---|"]
     for (domain, difficulty), rows in sorted(cells.items(), key=lambda kv: (kv[0][0], DIFFICULTIES.index(kv[0][1])
                                                                             if kv[0][1] in DIFFICULTIES else 9)):
@@ -82,6 +84,14 @@ def table(agent: str, run_dir: Path, tasks: list[Task], suite: list[Task]) -> st
             got = 100 * sum(geo[level]) / len(geo[level])
             base = 100 * constant.get(level, 0.0)
             lines.append(f"| {level} | {got:.0f} | {base:.0f} | {got - base:+.0f} |")
+        lines += ["", "| geolocation difficulty | n | city % | best constant city % | margin (points) |",
+                  "|---|---|---|---|---|"]
+        for difficulty in sorted(geo_city, key=lambda d: DIFFICULTIES.index(d) if d in DIFFICULTIES else 9):
+            rows = geo_city[difficulty]
+            got = 100 * sum(rows) / len(rows)
+            base = 100 * constant_guess(suite, [t for t in tasks if t.domain == "geolocation"
+                                                and t.difficulty == difficulty]).get("city", 0.0)
+            lines.append(f"| {difficulty} | {len(rows)} | {got:.0f} | {base:.0f} | {got - base:+.0f} |")
     return "\n".join(lines)
 
 

@@ -138,8 +138,8 @@ def test_country_cues_are_in_the_baseline_view():
 def test_landmark_views_describe_the_landmark():
     concorde = compose_view(LOCATIONS["g001"], "p0", "north")
     assert concorde.composition == "landmark" and "obelisk" in describe_view(concorde)
-    signed = [spec for _sp, _h, spec in all_views(LOCATIONS["g002"]) if spec.street_sign is not None]
-    assert signed and all("RUE OBERKAMPF" in describe_view(spec) for spec in signed)
+    signed = [spec for _sp, _h, spec in all_views(LOCATIONS["g003"]) if spec.street_sign is not None]
+    assert signed and all("RUE DE LA RÉPUBLIQUE" in describe_view(spec) for spec in signed)
 
 
 def _deciding_city_cues(loc, spec, text) -> list[str]:

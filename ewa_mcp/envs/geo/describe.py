@@ -7,6 +7,7 @@ It never names a country or city except where quoted from a sign.
 
 from __future__ import annotations
 
+from ewa_mcp.geometry import FOUR_DIRECTIONS
 from .scene import ShopSign, Vehicle, ViewSpec
 from .styles import TREE_WORDS, VEHICLE_WORDS, vehicle_look
 
@@ -72,6 +73,22 @@ def shop_cues(sign: ShopSign) -> set[str]:
     return out
 
 
+def facade_lanes(heading: str, drive: str) -> tuple[tuple[str, str, str], tuple[str, str, str]]:
+    """(from, to, compass) of the near and the far lane's traffic in a view across the street.
+
+    The view looks across the street from the kerb behind the viewer, so the near lane is the one on the
+    viewer's side. Traffic keeping to the right has that kerb on its right: it moves to the viewer's
+    right, which is the facing turned a quarter clockwise (facing north, eastward). Turned round at the
+    same standpoint, the view looks across from the other kerb: the near lane is the other lane, and it
+    too moves left to right, but westward; the compass words say which lane is which."""
+    turn = 90 if drive == "right" else 270
+    near_to = FOUR_DIRECTIONS[(FOUR_DIRECTIONS.index(heading) + turn // 90) % 4]
+    far_to = FOUR_DIRECTIONS[(FOUR_DIRECTIONS.index(near_to) + 2) % 4]
+    if drive == "right":
+        return ("left", "right", f"{near_to}ward"), ("right", "left", f"{far_to}ward")
+    return ("right", "left", f"{near_to}ward"), ("left", "right", f"{far_to}ward")
+
+
 def describe_view(spec: ViewSpec) -> str:
     return describe_view_cues(spec)[0]
 
@@ -104,10 +121,9 @@ def describe_view_cues(spec: ViewSpec) -> tuple[str, frozenset[str]]:
             s.append(f"Traffic keeps to the {spec.drive}: cars on the {spec.drive}-hand side of the road drive away "
                      f"from you showing red tail lights, oncoming cars use the {other}-hand side.")
         else:
-            near = "left to right" if spec.drive == "right" else "right to left"
-            far = "right to left" if spec.drive == "right" else "left to right"
-            s.append(f"In the lane nearer to you traffic moves from your {near.replace(' to ', ' to your ')}; "
-                     f"in the far lane from your {far.replace(' to ', ' to your ')}.")
+            near, far = facade_lanes(spec.heading, spec.drive)
+            s.append(f"In the lane nearer to you traffic moves from your {near[0]} to your {near[1]} "
+                     f"({near[2]}); in the far lane from your {far[0]} to your {far[1]} ({far[2]}).")
         marks = []
         if spec.centre_line:
             marks.append(f"a broken {spec.centre_line} stripe divides the two directions")

@@ -17,13 +17,16 @@ read against the wiki's descriptions of the candidate cities.
 from __future__ import annotations
 
 from collections import defaultdict
+from collections.abc import Iterable
 from functools import lru_cache
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .cities import City
 from .countries import COUNTRIES
-from .locations import LOCATIONS_LIST, Location
 from .styles import CLIMATE
+
+if TYPE_CHECKING:
+    from .locations import Location
 
 def shared_cues(city: City) -> dict[str, Any]:
     country = COUNTRIES[city.iso]
@@ -36,9 +39,10 @@ def shared_cues(city: City) -> dict[str, Any]:
     }
 
 
-@lru_cache(maxsize=1)
-def _hard_cities() -> frozenset[str]:
-    cities = {loc.city_key: loc.city for loc in LOCATIONS_LIST}
+def hard_city_keys(in_set: Iterable[City]) -> frozenset[str]:
+    """The keys of the hard cities among ``in_set`` (the cities of the location set). Needs no locations,
+    so locations.py can ask it while it builds the list (shared_streets.py)."""
+    cities = {city.key: city for city in in_set}
     cues = {key: shared_cues(city) for key, city in cities.items()}
     by_country: dict[str, list[str]] = defaultdict(list)
     for key, city in cities.items():
@@ -55,6 +59,13 @@ def _hard_cities() -> frozenset[str]:
         if each_shared and together_unique:
             hard.add(key)
     return frozenset(hard)
+
+
+@lru_cache(maxsize=1)
+def _hard_cities() -> frozenset[str]:
+    from .locations import LOCATIONS_LIST  # locations.py imports this module's answer as it builds the list
+
+    return hard_city_keys(loc.city for loc in LOCATIONS_LIST)
 
 
 def is_hard(loc: Location) -> bool:

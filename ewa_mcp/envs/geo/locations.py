@@ -9,6 +9,10 @@ Difficulty says which level is hard, and decides where the cues appear (see scen
   city    country cues everywhere, city cues only after moving or looking around, the
           street sign one step away;
   street  country and city cues at the start, the street sign only two steps away.
+
+Hard locations (hardness.py) stand on a street whose name many cities of their country share
+(shared_streets.py): the list below gives every location's surveyed street, and ``LOCATIONS_LIST``
+is that list with the hard ones renamed, so a street sign never names their city.
 """
 
 from __future__ import annotations
@@ -18,6 +22,7 @@ from functools import lru_cache
 
 from .cities import CITIES, City
 from .countries import COUNTRIES, Country
+from .shared_streets import with_shared_streets
 
 DIFFICULTIES = ("easy", "city", "street")
 
@@ -439,6 +444,11 @@ LOCATIONS_LIST: list[Location] = [
     _l("g184", "suva", "Victoria Parade", "VICTORIA PARADE", -18.1410, 178.4250, 0, "c"),
     _l("g185", "apia", "Beach Road", "BEACH ROAD", -13.8310, -171.7600, 90, "s"),
 ]
+
+# A hard location's own street name would name its city two steps from the start; it takes a name that many
+# cities of its country share (shared_streets.py) and keeps its coordinates.
+SURVEYED_LOCATIONS_LIST: list[Location] = LOCATIONS_LIST
+LOCATIONS_LIST = with_shared_streets(SURVEYED_LOCATIONS_LIST)
 
 LOCATIONS: dict[str, Location] = {loc.id: loc for loc in LOCATIONS_LIST}
 
