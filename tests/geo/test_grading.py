@@ -167,3 +167,39 @@ def test_aggregate_and_table_by_setting():
     assert baseline_at < embodied_at  # the paper's order
     assert "| 50.00 |" in lines[baseline_at + 1]  # model-a's baseline city accuracy
     assert sum("model-b" in line for line in lines) == 1  # model-b has no baseline rows
+
+
+# ------------------------------------------------------------------ levels a task can ask for
+def test_a_task_without_a_readable_street_asks_for_three_levels_and_still_reports_the_street():
+    three = DELHI.model_copy(update={"graded_levels": ["continent", "country", "city"]})
+    guessed = grade_geolocation(three, submit(DELHI, street="Rajpath"))
+    assert guessed["all_levels"] is True and guessed["street"] is False and guessed["completion"] == 1.0
+    assert guessed["graded_levels"] == ["continent", "country", "city"]
+    wrong_city = grade_geolocation(three, submit(DELHI, city="Mumbai"))
+    assert wrong_city["all_levels"] is False and wrong_city["completion"] == pytest.approx(2 / 3)
+    four = grade_geolocation(DELHI, submit(DELHI, street="Rajpath"))
+    assert four["all_levels"] is False and four["completion"] == 0.75
+
+
+def test_only_baseline_views_without_a_street_sign_leave_the_street_out():
+    """The levels a task asks for follow what its views can show: the one north view of a baseline task
+    (a street sign there, or not), every level in the embodied setting (the sign is a walk away)."""
+    import json
+
+    from ewa_mcp.core.paths import tasks_dir
+    from ewa_mcp.envs.geo.graph import START, build_graph
+    from ewa_mcp.envs.geo.locations import LOCATIONS_LIST
+    from ewa_mcp.envs.geo.scene import street_sign_visible
+
+    by_id = {loc.id: loc for loc in LOCATIONS_LIST}
+    seen = {"baseline": 0, "embodied": 0}
+    for path in sorted((tasks_dir() / "geolocation").glob("*.json")):
+        for task in json.loads(path.read_text(encoding="utf-8")):
+            setting, loc = task["metadata"]["setting"], by_id[task["metadata"]["location_id"]]
+            graded = task["answer"]["graded_levels"]
+            seen[setting] += 1
+            if setting == "embodied" or street_sign_visible(loc, build_graph(loc)[START], "north"):
+                assert graded is None, task["id"]
+            else:
+                assert graded == ["continent", "country", "city"], task["id"]
+    assert seen == {"baseline": 185, "embodied": 185}

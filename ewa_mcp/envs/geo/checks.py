@@ -99,11 +99,14 @@ def grade_geolocation(answer_check: GeoAnswer | dict[str, Any], submission: dict
     }
     lat, lng = _coordinate(sub.get("lat"), 90), _coordinate(sub.get("lng"), 180)
     distance = None if lat is None or lng is None else round(haversine_km(lat, lng, truth.lat, truth.lng), 3)
+    graded = [level for level in LEVELS if truth.graded_levels is None or level in truth.graded_levels]
     return {
         **levels,
-        "all_levels": all(levels.values()),
-        # Partial credit: the fraction of the four levels right (the episode's completion).
-        "completion": sum(levels.values()) / len(LEVELS),
+        # Success: every level the task asks for (graded_levels; all four unless the views cannot show one).
+        "all_levels": all(levels[level] for level in graded),
+        "graded_levels": graded,
+        # Partial credit: the fraction of those levels right (the episode's completion).
+        "completion": sum(levels[level] for level in graded) / len(graded),
         "distance_km": distance,
         "bands": distance_bands(distance),
         "score": geoguessr_score(distance),

@@ -23,3 +23,6 @@ class GeoAnswer(StrictModel):
     country: str
     city: str
     street: str
+    # The levels overall success asks for; None: all four. A baseline task whose one view shows no street
+    # sign leaves the street out (it cannot be read, only guessed); it is still graded and reported.
+    graded_levels: list[Literal["continent", "country", "city", "street"]] | None = None

@@ -17,8 +17,10 @@ from ewa_mcp.core.taskmodel import StartState, Task, ToolCall
 from ewa_mcp.envs.browser.goals import WebStart
 from ewa_mcp.envs.geo.goals import GeoAnswer, GeoStart
 from .. import gazetteer
+from ..graph import START, build_graph
 from ..hardness import task_difficulty
 from ..locations import LOCATIONS_LIST, Location
+from ..scene import street_sign_visible
 
 SETTINGS = ("baseline", "embodied")
 # Every call is a step (looks and wiki reading too), so the baseline has room to look once and read the wiki.
@@ -57,8 +59,12 @@ def task_id(loc: Location, setting: str) -> str:
     return f"geo-{TASK_NUMBERS[loc.id]:04d}-{setting}"
 
 
-def answer_for(loc: Location) -> GeoAnswer:
+def answer_for(loc: Location, setting: str = "embodied") -> GeoAnswer:
+    """The location's answer; in the baseline setting without a street sign in its one view, success asks
+    for the three levels the view can show (the street is still graded and reported)."""
+    sign_seen = setting != "baseline" or street_sign_visible(loc, build_graph(loc)[START], "north")
     return GeoAnswer(
+        graded_levels=None if sign_seen else ["continent", "country", "city"],
         lat=loc.lat,
         lng=loc.lng,
         continent=loc.continent or gazetteer.country_continent(loc.city.iso),
@@ -81,7 +87,7 @@ def _oracle(loc: Location, setting: str, answer: GeoAnswer) -> list[ToolCall]:
 
 
 def build_task(loc: Location, setting: str) -> Task:
-    answer = answer_for(loc)
+    answer = answer_for(loc, setting)
     start = StartState(
         environment="embodied",
         web=WebStart(start_url="wiki:/") if setting == "embodied" else None,
