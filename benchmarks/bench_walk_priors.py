@@ -68,6 +68,9 @@ def main() -> int:
         nav["end: nearest the start on foot"] += by_walk[0].id == end
         nav["end: farthest from the start on foot"] += by_walk[-1].id == end
         nav["order: as listed (directions-walker)"] += ids == order
+        eliminated = elimination_end(origin, listed).id
+        nav["order: the others as listed, then elimination's end (stop-elimination)"] += \
+            [i for i in ids if i != eliminated] + [eliminated] == order
         nav["order: reverse of listed"] += ids[::-1] == order
         nav["order: nearest stop first"] += greedy_order(origin, listed) == order
         nav["order: shortest walk past all"] += [p.id for p in min(

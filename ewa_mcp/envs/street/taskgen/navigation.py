@@ -3,9 +3,10 @@ end the walk at the destination. Origins and destinations are landmarks, address
 in all four cities; the start heading is drawn from the streets at the origin, never from the route.
 
 Difficulty: a direct route with at most one turn is easy, one with more turns medium. Hard is hard by
-composition (issue 26, principle 6): three named stops visited in the order the wiki gives (oldest
-building first, by the year built), ending at the newest; the intent lists them in another order
-(passed_place goals for the first two, reached_place for the last, a wiki page view of each)."""
+composition (issue 26, principle 6): four named stops visited in the order the wiki gives (oldest
+building first, by the year built), ending at the newest; the intent lists them in an independent shuffle
+(passed_place goals for the first three, each after the one before, reached_place for the last, a wiki
+page view of each)."""
 
 from __future__ import annotations
 
@@ -22,7 +23,7 @@ from ewa_mcp.websites.wiki import store as wiki
 from ewa_mcp.taskgen.common import WALK_RULE, call, rng_for, site_url, step_budget
 
 PER_CITY = {"manhattan": 44, "philadelphia": 36, "boston": 36, "pittsburgh": 36}
-# Hard tasks (three stops in the wiki's order) per city: 34 of 186 navigation tasks, 18 %.
+# Hard tasks (four stops in the wiki's order) per city: 34 of 186 navigation tasks, 18 %.
 PER_CITY_VIA = {"manhattan": 10, "philadelphia": 8, "boston": 8, "pittsburgh": 8}
 MIN_M, MAX_M = 250.0, 1300.0
 VIA_MIN_LEG_M = 150.0  # the shortest leg between two stops
