@@ -4,7 +4,7 @@ from the task files without playing: the share of tasks where the rule's choice 
     nice .venv/bin/python benchmarks/bench_walk_priors.py
 
 Rules are the walking heuristic agents' choices (ewa_mcp/evaluation/heuristics/walking.py): for a
-three-stop navigation task the stop each rule ends at; for shopping the store (and product or size) each
+hard (several-stop) navigation task the stop each rule ends at, or the whole order it walks; for shopping the store (and product or size) each
 picks. A ceiling only: the agent must still place the order and walk, which it does (tests/core/
 test_walking_heuristics.py). Numbers printed here are measurements, not assertions.
 """
@@ -13,7 +13,9 @@ from __future__ import annotations
 
 import sys
 from collections import Counter, defaultdict
+from itertools import permutations
 from pathlib import Path
+from typing import Any
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
@@ -28,12 +30,23 @@ from ewa_mcp.evaluation.heuristics.walking import (  # noqa: E402
     sellers,
     shopping_items,
     stops_of,
+    walk_m,
     world,
 )
 
 
 def family(task_id: str) -> str:
     return task_id.split("-")[1]
+
+
+def greedy_order(origin: Any, stops: list[Any]) -> list[str]:
+    """The stops in the order a walk that always goes to the nearest one not yet seen takes them."""
+    here, left, out = origin, list(stops), []
+    while left:
+        here = min(left, key=lambda p: walk_m(here.node, p.node))
+        left.remove(here)
+        out.append(here.id)
+    return out
 
 
 def main() -> int:
@@ -44,15 +57,27 @@ def main() -> int:
             continue
         origin_text, listed_text = stops_of(t.intent) or ("", [])
         origin, listed = resolve(origin_text), [resolve(x) for x in listed_text]
-        end = t.metadata["stops"][-1]
+        order, end = t.metadata["stops"], t.metadata["stops"][-1]
+        ids = [p.id for p in listed]
         nav["tasks"] += 1
-        nav["elimination (neither listed last nor the nearest-first end)"] += elimination_end(origin, listed).id == end
-        nav["the first listed"] += listed[0].id == end
-        nav["the middle listed"] += listed[1].id == end
-        nav["the last listed (the intent's order)"] += listed[2].id == end
-        nav["nearest-first walk's end"] += nearest_first(world(), origin, listed) == end
+        nav["end: elimination (neither listed last nor the nearest-first end)"] += elimination_end(origin, listed).id == end
+        for k in range(len(listed)):
+            nav[f"end: listed {k + 1} of {len(listed)}"] += ids[k] == end
+        nav["end: the nearest-first walk's end"] += nearest_first(world(), origin, listed) == end
+        by_walk = sorted(listed, key=lambda p: walk_m(origin.node, p.node))
+        nav["end: nearest the start on foot"] += by_walk[0].id == end
+        nav["end: farthest from the start on foot"] += by_walk[-1].id == end
+        nav["order: as listed (directions-walker)"] += ids == order
+        eliminated = elimination_end(origin, listed).id
+        nav["order: the others as listed, then elimination's end (stop-elimination)"] += \
+            [i for i in ids if i != eliminated] + [eliminated] == order
+        nav["order: reverse of listed"] += ids[::-1] == order
+        nav["order: nearest stop first"] += greedy_order(origin, listed) == order
+        nav["order: shortest walk past all"] += [p.id for p in min(
+            permutations(listed), key=lambda perm: sum(walk_m(a.node, b.node) for a, b in zip([origin, *perm], perm)))] == order
     n = nav.pop("tasks")
-    print(f"navigation hard ({n} tasks): the rule's last stop is the newest")
+    print(f"navigation hard ({n} tasks): the rule's last stop is the newest (end; chance 1 in 4) / its whole order is "
+          "the wiki's (order; chance 1 in 24, and only the whole order passes: each stop is graded after the one before)")
     for rule, hits in nav.items():
         print(f"  {rule}: {hits} ({100 * hits / n:.0f} %)")
 

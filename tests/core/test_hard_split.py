@@ -78,24 +78,41 @@ def test_hard_traveling_needs_two_hops_and_the_range_together() -> None:
 
 
 def test_hard_navigation_order_comes_from_the_wiki_not_the_intent() -> None:
-    """Three stops, oldest building first by the wiki's year built, ending at the newest: the intent's own
-    order and the nearest-stop-first walk end elsewhere; the goals pass the first two and end at the newest."""
-    from ewa_mcp.envs.street.taskgen.navigation import nearest_first
+    """Four stops, oldest building first by the wiki's year built, ending at the newest; each stop graded
+    after the one before it. Nothing the draw kept depends on the answer: the listed order is a shuffle of
+    its own stream (so across the suite the newest stands in every listed position), and the leg and
+    walk limits hold for the stops in every order."""
+    from itertools import permutations
+
+    from ewa_mcp.envs.street.taskgen.navigation import STOPS_MAX_M, VIA_MIN_LEG_M, nearest_first
+    from ewa_mcp.taskgen.common import rng_for
 
     world = get_world()
     hard = [t for t in suite("navigation") if t["difficulty"] == "hard"]
     assert len(hard) >= 30
+    ends_listed_at, nearest_ends = set(), 0  # the old draw rejected both: the end never listed last, nor nearest-first's
     for task in hard:
         meta = task["metadata"]
         stops = [world.places[p] for p in meta["stops"]]
+        assert len(stops) == 4 and sorted(meta["listed"]) == sorted(meta["stops"]), task["id"]
         years = [int(wiki.by_poi_id(p.id).infobox["Year built"]) for p in stops]
         assert years == meta["years"] and all(b - a >= 5 for a, b in zip(years, years[1:])), task["id"]
-        assert meta["listed"][-1] != meta["stops"][-1], task["id"]
-        positions = [task["intent"].index(p.name) for p in stops]
-        assert sorted(positions) != positions or meta["listed"] != meta["stops"], task["id"]
+        positions = [task["intent"].index(world.places[i].name) for i in meta["listed"]]
+        assert positions == sorted(positions), task["id"]  # the intent names them in the listed order
+        city, n = task["id"].rsplit("-", 2)[-2], int(task["id"].rsplit("-", 1)[-1])
+        shuffled = list(meta["stops"])
+        rng_for("navigation-via-listed", city, n).shuffle(shuffled)
+        assert shuffled == meta["listed"], task["id"]  # the listing is the shuffle, never redrawn for the answer
+        ends_listed_at.add(meta["listed"].index(meta["stops"][-1]))
         origin = world.places.get(meta["origin_id"]) or world.place(meta["origin_id"])
-        assert nearest_first(world, origin, stops) != meta["stops"][-1], task["id"]
+        nearest_ends += nearest_first(world, origin, stops) == meta["stops"][-1]
+        legs = [world.directions(a.id, b.id).distance_m for a in [origin, *stops] for b in stops if a.id != b.id]
+        assert min(legs) >= VIA_MIN_LEG_M, task["id"]
+        assert max(sum(world.directions(a.id, b.id).distance_m for a, b in zip([origin, *perm], perm))
+                   for perm in permutations(stops)) <= STOPS_MAX_M, task["id"]
         goals = task["embodied_goals"]
-        assert [g["kind"] for g in goals] == ["passed_place", "passed_place", "reached_place"], task["id"]
+        assert [g["kind"] for g in goals] == ["passed_place"] * 3 + ["reached_place"], task["id"]
         assert [g["place_id"] for g in goals] == meta["stops"], task["id"]
+        assert [(g.get("after") or {}).get("place_id") for g in goals[:3]] == [None, *meta["stops"][:2]], task["id"]
         assert {g["path_prefix"] for g in task["web_goals"]} == {f"/wiki/{wiki.by_poi_id(p.id).slug}" for p in stops}
+    assert ends_listed_at == {0, 1, 2, 3} and nearest_ends > 0

@@ -154,7 +154,7 @@ def route_of(intent: str) -> tuple[str, str] | None:
 
 
 def stops_of(intent: str) -> tuple[str, list[str]] | None:
-    """(origin, stops in the order listed) of a three-stop intent."""
+    """(origin, stops in the order listed) of a hard (several-stop) navigation intent."""
     for pattern in _STOPS:
         m = re.search(pattern, intent)
         if m:
@@ -281,7 +281,7 @@ async def order(w: Walker, items: list[tuple[Any, str]], store_id: str) -> None:
 # ------------------------------------------------------------------ the agents
 class DirectionsWalkerAgent:
     """Following the map: directions from the start to whatever the intent names, walked as listed, then
-    stop (and answer from the wiki where asked). Navigation: the destination (three stops: in the order the
+    stop (and answer from the wiki where asked). Navigation: the destination (several stops: in the order the
     intent lists them); traveling: the address given (a hard task names none: the first landmark in its range
     the wiki lists for the fact's words); shopping: the first store the intent names (the calories and
     two-store forms), with the first named product or both items ordered there."""
@@ -423,8 +423,9 @@ class StepLimitStoreAgent(StoreRuleAgent):
 
 
 def elimination_end(origin: Any, listed: list[Any]) -> Any:
-    """The stop a three-stop task's generator could have made the newest: neither the last one listed
-    nor where a nearest-first walk ends (the first listed of those left, else the first listed)."""
+    """The stop the old three-stop generator could have made the newest (it rejected the other draws):
+    neither the last one listed nor where a nearest-first walk ends (the first listed of those left, else
+    the first listed). Kept as a rule to measure: the generator no longer rejects either draw."""
     from ...envs.street.taskgen.navigation import nearest_first
 
     greedy = nearest_first(world(), origin, listed)
@@ -433,8 +434,8 @@ def elimination_end(origin: Any, listed: list[Any]) -> Any:
 
 
 class StopEliminationAgent:
-    """Three stops, no wiki reading: open each stop's article (unread), then walk past the other two and
-    end at the stop that is neither listed last nor where a nearest-first walk ends."""
+    """Several stops, no wiki reading: open each stop's article (unread), then walk past the others in the
+    order listed and end at the stop that is neither listed last nor where a nearest-first walk ends."""
 
     name = "stop-elimination"
 
@@ -444,7 +445,7 @@ class StopEliminationAgent:
         found = [resolve(x) for x in parsed[1]] if parsed else []
         places = [p for p in found if p is not None]
         origin = resolve(parsed[0]) if parsed else None
-        if origin is None or len(places) != 3:
+        if origin is None or len(places) < 3 or len(places) != len(found):
             return await finish(s)
         w = Walker(s)
         for p in places:

@@ -3,12 +3,14 @@ end the walk at the destination. Origins and destinations are landmarks, address
 in all four cities; the start heading is drawn from the streets at the origin, never from the route.
 
 Difficulty: a direct route with at most one turn is easy, one with more turns medium. Hard is hard by
-composition (issue 26, principle 6): three named stops visited in the order the wiki gives (oldest
-building first, by the year built), ending at the newest; the intent lists them in another order
-(passed_place goals for the first two, reached_place for the last, a wiki page view of each)."""
+composition (issue 26, principle 6): four named stops visited in the order the wiki gives (oldest
+building first, by the year built), ending at the newest; the intent lists them in an independent shuffle
+(passed_place goals for the first three, each after the one before, reached_place for the last, a wiki
+page view of each)."""
 
 from __future__ import annotations
 
+from itertools import permutations
 from typing import Any
 
 from ewa_mcp.geometry import haversine_m
@@ -21,7 +23,7 @@ from ewa_mcp.websites.wiki import store as wiki
 from ewa_mcp.taskgen.common import WALK_RULE, call, rng_for, site_url, step_budget
 
 PER_CITY = {"manhattan": 44, "philadelphia": 36, "boston": 36, "pittsburgh": 36}
-# Hard tasks (three stops in the wiki's order) per city: 34 of 186 navigation tasks, 18 %.
+# Hard tasks (four stops in the wiki's order) per city: 34 of 186 navigation tasks, 18 %.
 PER_CITY_VIA = {"manhattan": 10, "philadelphia": 8, "boston": 8, "pittsburgh": 8}
 MIN_M, MAX_M = 250.0, 1300.0
 VIA_MIN_LEG_M = 150.0  # the shortest leg between two stops
@@ -90,7 +92,9 @@ def resolves_to(resolver: WorldAdapter, place: Any) -> bool:
     return found is not None and found.id == place.id
 
 
-STOPS_MAX_M = 1800.0  # the whole walk past three stops (the hard step budget fits it)
+STOPS = 4  # stops per hard task: a guessed order is right 1 time in 24 (3! = 6 with three)
+STOPS_NEAR_M = 500.0  # every stop within this of the origin as the crow flies
+STOPS_MAX_M = 2200.0  # the longest walk past the stops in ANY order (the hard step budget fits it)
 STOPS_TEMPLATES = [
     "Starting at {origin}, walk to {stops} in the order they were built, oldest first, by the year each was "
     "built as the wiki gives it, and end your walk at the newest. Look the years up on the wiki; the map site "
@@ -120,46 +124,58 @@ def article_slug(place: Any) -> str:
 
 
 def stops_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any], count: int) -> list[Task]:
-    """Hard by composition (issue 26, principle 6): three stops whose order the wiki gives, not the intent
-    (oldest first by the year built), ending at the newest. The intent lists them in another order; the
-    walk that takes the nearest stop first ends elsewhere; each leg is a walk of its own."""
+    """Hard by composition (issue 26, principle 6): four stops whose order only the wiki gives (oldest first
+    by the year built), ending at the newest. Nothing the agent sees before the work tells the order: the
+    intent lists the stops in an independent seeded shuffle (never checked against the answer), and every
+    condition a draw must meet (legs of at least VIA_MIN_LEG_M, a walk of at most STOPS_MAX_M) holds for
+    the stops in EVERY order, so the geometry of the draw says nothing of which order is the answer."""
     rng = rng_for("navigation-via", city)
     dated = [(p, y) for p, y in stop_years([p for p in places if p.kind not in ("intersection", "address")])
              if resolves_to(resolver, p)]
     tasks: list[Task] = []
     used: set[tuple[str, ...]] = set()
+    walks: dict[tuple[str, str], Any] = {}
+
+    def leg(a: Any, b: Any) -> Any:
+        if (a.id, b.id) not in walks:
+            walks[(a.id, b.id)] = world.directions(a.id, b.id)
+        return walks[(a.id, b.id)]
+
     tries = 0
-    while len(tasks) < count and tries < count * 300 and len(dated) >= 3:
+    while len(tasks) < count and tries < count * 300 and len(dated) >= STOPS:
         tries += 1
         origin = rng.choice(places)
         here = world.node(origin.node)
-        # stops near the origin (as the crow flies), so the three legs fit one walk
-        near = [(p, y) for p, y in dated if haversine_m(here.lat, here.lng, p.lat, p.lng) <= STOPS_MAX_M / 3]
-        if len(near) < 3:
+        near = [(p, y) for p, y in dated if haversine_m(here.lat, here.lng, p.lat, p.lng) <= STOPS_NEAR_M]
+        if len(near) < STOPS:
             continue
-        chosen = rng.sample(near, 3)
+        chosen = rng.sample(near, STOPS)
         years = sorted(y for _, y in chosen)
-        if years[1] - years[0] < 5 or years[2] - years[1] < 5:
+        if any(b - a < 5 for a, b in zip(years, years[1:])):
             continue  # the order must be plain from the years
         order = [p for p, _ in sorted(chosen, key=lambda c: c[1])]
         key = (origin.id, *sorted(p.id for p in order))
-        if key in used or len({origin.node, *(p.node for p in order)}) < 4 or not resolves_to(resolver, origin):
+        if key in used or len({origin.node, *(p.node for p in order)}) < STOPS + 1 \
+                or not resolves_to(resolver, origin):
             continue
         try:
-            legs = [world.directions(a.id, b.id) for a, b in zip([origin, *order], order)]
-            greedy_end = nearest_first(world, origin, order)
+            # every leg any order could walk: origin to each stop, each stop to each other
+            pairs = [(origin, p) for p in order] + [(a, b) for a in order for b in order if a.id != b.id]
+            if min(leg(a, b).distance_m for a, b in pairs) < VIA_MIN_LEG_M:
+                continue
+            longest = max(sum(leg(a, b).distance_m for a, b in zip([origin, *perm], perm))
+                          for perm in permutations(order))
         except ValueError:
             continue
-        total = sum(leg.distance_m for leg in legs)
-        if min(leg.distance_m for leg in legs) < VIA_MIN_LEG_M or total > STOPS_MAX_M:
+        if longest > STOPS_MAX_M:
             continue
-        listed = order[:]
-        rng.shuffle(listed)
-        if listed[-1].id == order[-1].id or greedy_end == order[-1].id:
-            continue  # neither the intent's order nor "nearest first" ends at the newest
-        used.add(key)
         n = len(tasks)
-        nodes = legs[0].nodes + [x for leg in legs[1:] for x in leg.nodes[1:]]
+        listed = order[:]
+        rng_for("navigation-via-listed", city, n).shuffle(listed)  # its own stream: independent of the answer
+        used.add(key)
+        legs = [leg(a, b) for a, b in zip([origin, *order], order)]
+        total = sum(x.distance_m for x in legs)
+        nodes = legs[0].nodes + [x for lg in legs[1:] for x in lg.nodes[1:]]
         oracle = [*[call("browser_goto", url=site_url("wiki", f"/wiki/{article_slug(p)}")) for p in listed],
                   *[call("browser_goto", url=site_url("map", "/directions", **{"from": a.name, "to": b.name}))
                     for a, b in zip([origin, *order], order)],
@@ -174,6 +190,7 @@ def stops_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any]
             intent=task_rng.choice(STOPS_TEMPLATES).format(origin=describe(origin), stops=stops),
             start=start_state(world, city, origin, task_rng),
             web_goals=[PageVisited(site="wiki", path_prefix=f"/wiki/{article_slug(p)}") for p in order],
+            # each stop passed after the one before it (a chain), the walk ending at the newest
             embodied_goals=[*[PassedPlace(city=city, node=p.node, lat=world.node(p.node).lat,
                                           lng=world.node(p.node).lng, place_id=p.id,
                                           after=waypoint(world, order[k - 1]) if k else None)
@@ -183,8 +200,8 @@ def stops_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any]
             oracle=oracle,
             metadata={"shortest_path_m": round(total, 1), "start_lat": world.node(origin.node).lat,
                       "start_lng": world.node(origin.node).lng, "origin_node": origin.node,
-                      "destination_node": order[-1].node, "route_steps": sum(len(leg.steps) for leg in legs),
-                      "turns": sum(turns(leg) for leg in legs), "stops": [p.id for p in order],
+                      "destination_node": order[-1].node, "route_steps": sum(len(x.steps) for x in legs),
+                      "turns": sum(turns(x) for x in legs), "stops": [p.id for p in order],
                       "listed": [p.id for p in listed], "years": years, "origin_id": origin.id},
         ))
     return tasks
