@@ -37,7 +37,7 @@ def tasks():
 def _search_filters(url: str) -> dict[str, object]:
     query = parse_qs(urlsplit(url).query)
     filters: dict[str, object] = {k: v for k, v in query.items() if k in ("include", "exclude", "equipment")}
-    filters.update({k: v[0] for k, v in query.items() if k in ("diet", "difficulty")})
+    filters.update({k: v[0] for k, v in query.items() if k in ("diet", "difficulty", "cuisine")})
     return filters
 
 

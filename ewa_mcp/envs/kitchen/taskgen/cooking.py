@@ -6,9 +6,10 @@ Three templates, each with its difficulty:
   * cook (easy): the recipe asked for by a word of its name that several recipes share (else an ingredient
     several use) and the constraints that leave it alone among them, every food in the kitchen;
   * buy (medium): the same, one needed food missing and ordered for delivery;
-  * hard (by composition, issue 26): the recipe is told from its look-alike only by how one of its steps
-    treats a food both use (cooked in the pan, toasted, kept raw; no search filter says it), or, where no
-    step tells them apart, by two constraints that only together single it out; two needed foods are
+  * hard (by composition, issue 26): the recipe is told from the other recipes of a word of its name (or of
+    an ingredient) only by what one of its steps, or two together, do to a food (cooked in the pan, toasted,
+    kept raw; no search filter says it), or, where no step tells them apart, by two constraints that only
+    together single it out; two needed foods are
     missing, and the intent does not say which: the agent compares the recipe's kitchen foods with the
     kitchen, then orders exactly those for delivery (in one order) before it cooks.
 """
@@ -81,8 +82,8 @@ NAME_WORD_MIN_NAMES = 3  # recipes of at least this many names share the word: a
 
 def _filters(q: str, filters: dict[str, Any]) -> Filters:
     return Filters(q=q, diet=filters.get("diet", ""), difficulty=filters.get("difficulty", ""),
-                   include=tuple(filters.get("include", ())), exclude=tuple(filters.get("exclude", ())),
-                   equipment=tuple(filters.get("equipment", ())))
+                   cuisine=filters.get("cuisine", ""), include=tuple(filters.get("include", ())),
+                   exclude=tuple(filters.get("exclude", ())), equipment=tuple(filters.get("equipment", ())))
 
 
 def named_with(word: str, catalog: Any, filters: dict[str, Any] | None = None) -> list[dict[str, Any]]:
@@ -217,6 +218,46 @@ def _three_constraints_by_word(recipe_id: str) -> tuple[str, list[tuple[str, dic
     return "", []
 
 
+def _three_together(options: list[tuple[str, dict[str, Any]]], lists: Callable[[dict[str, Any]], list[dict[str, Any]]],
+                    recipe_id: str) -> list[tuple[str, dict[str, Any]]]:
+    """The constraints, three together, under which ``lists`` (a search) lists only the recipe."""
+    found: list[tuple[str, dict[str, Any]]] = []
+    for a, b, c in itertools.combinations(options, 3):
+        merged = merge_filters(a[1], b[1])
+        merged = merge_filters(merged, c[1]) if merged is not None else None
+        if merged is not None and [r["id"] for r in lists(merged)] == [recipe_id]:
+            found.append((f"{a[0]}. {b[0]}. {c[0]}", merged))
+    return found
+
+
+@functools.cache
+def _cuisine_constraints(recipe_id: str) -> tuple[str, list[tuple[str, dict[str, Any]]]]:
+    """For a recipe no word or ingredient serves with the usual constraints: a word of its name, else an
+    ingredient of it, whose list (of several names) does not show it first, and the constraints (one, else
+    two, else three together) that leave it alone there, the cuisine among them ("Cuisine: Irish": the site
+    filters by it); ("", []) when none do. Named, a paired recipe was a coin toss for an agent that opens
+    the first listed recipe, and a unique name needed no choosing; a word whose list shows it first, a sure
+    pass."""
+    catalog = load_catalog()
+    recipe = catalog.by_id[recipe_id]
+    cuisine = (f"Cuisine: {recipe['cuisine']}", {"cuisine": recipe["cuisine"]})
+    searches: list[tuple[str, dict[str, Any], list[tuple[str, dict[str, Any]]], Callable[..., Any]]] = []
+    for word, listed in _asking_words(recipe, catalog):
+        options = constraint_options(recipe, catalog, [r for r in listed if r["id"] != recipe_id], wide=True)
+        searches.append((word, {"q": word}, [*options, cuisine], functools.partial(named_with, word, catalog)))
+    for ingredient, listed in _asking_ingredients(recipe, catalog):
+        options = [(suffix, f) for suffix, f in constraint_options(
+            recipe, catalog, [r for r in listed if r["id"] != recipe_id], wide=True) if f.get("include") != [ingredient]]
+        searches.append((ingredient, {"q": "", "include": [ingredient]}, [*options, cuisine],
+                         functools.partial(made_with, ingredient, catalog)))
+    for find in (_one_else_two, _three_together):
+        for key, search, options, lists in searches:
+            found = find(options, lists, recipe_id)
+            if found:
+                return key, [(suffix, {**f, **(merge_filters(search, f) or {})}) for suffix, f in found]
+    return "", []
+
+
 def look_alikes(recipe: dict[str, Any], catalog: Any, word: str | None = None,
                 ingredient: str | None = None) -> list[dict[str, Any]]:
     """The recipes a task for this one must be told from: those that share the word the intent asks by
@@ -250,12 +291,17 @@ def constraints_for(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dic
     _, by_ingredient = ingredient_constraints(recipe, catalog)
     if by_ingredient:
         return by_ingredient
-    if by_word:
-        return by_word
     if not unique and catalog is load_catalog():
         _, by_three = _three_constraints_by_word(recipe["id"])
         if by_three:
             return by_three
+    if catalog is load_catalog():
+        # The cuisine, a filter no other form uses, where nothing else leaves it alone (docs/verified.md).
+        _, by_cuisine = _cuisine_constraints(recipe["id"])
+        if by_cuisine:
+            return by_cuisine
+    if by_word:
+        return by_word
     good: list[tuple[str, dict[str, Any]]] = [("", {})] if unique else []
     good += [(suffix, f) for suffix, f in constraint_options(recipe, catalog) if singles_out(recipe, catalog, f)]
     return good
@@ -265,7 +311,7 @@ def merge_filters(a: dict[str, Any], b: dict[str, Any]) -> dict[str, Any] | None
     """Both filters at once (None when they set the same single-valued filter)."""
     merged = dict(a)
     for key, value in b.items():
-        if key in ("diet", "difficulty"):
+        if key in ("diet", "difficulty", "cuisine"):
             if key in merged:
                 return None
             merged[key] = value
