@@ -415,6 +415,27 @@ def telling_step(recipe: dict[str, Any], catalog: Any) -> str | None:
 Treatments = dict[str, tuple[bool, str | None, str | None]]  # food_treatments' answer
 
 
+def _cooks(food: str, cook: str, t: Treatments) -> bool:
+    return food in t and t[food][1] == cook
+
+
+def _raw(food: str, t: Treatments) -> bool:
+    return food not in t or t[food][1] is None
+
+
+def _cuts(food: str, t: Treatments) -> bool:
+    return food in t and t[food][0]
+
+
+def _whole(food: str, t: Treatments) -> bool:
+    return food not in t or not t[food][0]
+
+
+def _serves(food: str, served: str, t: Treatments) -> bool:
+    # a rival that puts the food in no dish is not told apart by where this one serves it
+    return food in t and t[food][2] in (None, served)
+
+
 def step_statements(recipe: dict[str, Any]) -> list[tuple[str, Callable[[Treatments], bool]]]:
     """What the recipe's steps do to each food it works with, in plain words ("cooks the egg in the microwave",
     "cuts the tomato", "keeps the bread whole", "serves the lettuce in a bowl"), each with whether it holds
@@ -425,18 +446,16 @@ def step_statements(recipe: dict[str, Any]) -> list[tuple[str, Callable[[Treatme
     for food, (cut, cook, served) in sorted(food_treatments(recipe_ops(recipe)).items()):
         f = food.lower()
         if cook in COOKED_IN:
-            out.append((COOKED_IN[cook].format(f=f),
-                        lambda t, food=food, cook=cook: food in t and t[food][1] == cook))
+            out.append((COOKED_IN[cook].format(f=f), functools.partial(_cooks, food, cook)))
         elif cook is None:
-            out.append((f"keeps the {f} raw", lambda t, food=food: food not in t or t[food][1] is None))
+            out.append((f"keeps the {f} raw", functools.partial(_raw, food)))
         if cut:
-            out.append((f"{'cracks' if food == 'Egg' else 'cuts'} the {f}", lambda t, food=food: food in t and t[food][0]))
+            out.append((f"{'cracks' if food == 'Egg' else 'cuts'} the {f}", functools.partial(_cuts, food)))
         else:
-            out.append((f"keeps the {f} whole", lambda t, food=food: food not in t or not t[food][0]))
+            out.append((f"keeps the {f} whole", functools.partial(_whole, food)))
         if served:
-            # a rival that puts the food in no dish is not told apart by where this one serves it
             out.append((f"serves the {f} {'on a plate' if served == 'Plate' else 'in a bowl'}",
-                        lambda t, food=food, served=served: food in t and t[food][2] in (None, served)))
+                        functools.partial(_serves, food, served)))
     return out
 
 
@@ -481,7 +500,8 @@ def asked_telling_step(recipe_id: str) -> tuple[dict[str, Any], str] | None:
     if not any(r["name"] == recipe["name"] and r["id"] != recipe_id for r in catalog.recipes):
         return None
     statements = step_statements(recipe)
-    searches = [({"q": w}, listed) for w, listed in _asking_words(recipe, catalog)]
+    searches: list[tuple[dict[str, Any], list[dict[str, Any]]]] = [
+        ({"q": w}, listed) for w, listed in _asking_words(recipe, catalog)]
     searches += [({"q": "", "include": [i]}, listed) for i, listed in _asking_ingredients(recipe, catalog)]
     for size in (1, 2):  # one statement wherever one serves, under any search; else two together
         for search, listed in searches:
