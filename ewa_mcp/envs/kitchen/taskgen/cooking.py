@@ -6,9 +6,10 @@ Three templates, each with its difficulty:
   * cook (easy): the recipe asked for by a word of its name that several recipes share (else an ingredient
     several use) and the constraints that leave it alone among them, every food in the kitchen;
   * buy (medium): the same, one needed food missing and ordered for delivery;
-  * hard (by composition, issue 26): the recipe is told from its look-alike only by how one of its steps
-    treats a food both use (cooked in the pan, toasted, kept raw; no search filter says it), or, where no
-    step tells them apart, by two constraints that only together single it out; two needed foods are
+  * hard (by composition, issue 26): the recipe is told from the other recipes of a word of its name (or of
+    an ingredient) only by what one of its steps, or two together, do to a food (cooked in the pan, toasted,
+    kept raw; no search filter says it), or, where no step tells them apart, by two constraints that only
+    together single it out; two needed foods are
     missing, and the intent does not say which: the agent compares the recipe's kitchen foods with the
     kitchen, then orders exactly those for delivery (in one order) before it cooks.
 """
@@ -81,8 +82,8 @@ NAME_WORD_MIN_NAMES = 3  # recipes of at least this many names share the word: a
 
 def _filters(q: str, filters: dict[str, Any]) -> Filters:
     return Filters(q=q, diet=filters.get("diet", ""), difficulty=filters.get("difficulty", ""),
-                   include=tuple(filters.get("include", ())), exclude=tuple(filters.get("exclude", ())),
-                   equipment=tuple(filters.get("equipment", ())))
+                   cuisine=filters.get("cuisine", ""), include=tuple(filters.get("include", ())),
+                   exclude=tuple(filters.get("exclude", ())), equipment=tuple(filters.get("equipment", ())))
 
 
 def named_with(word: str, catalog: Any, filters: dict[str, Any] | None = None) -> list[dict[str, Any]]:
@@ -217,6 +218,46 @@ def _three_constraints_by_word(recipe_id: str) -> tuple[str, list[tuple[str, dic
     return "", []
 
 
+def _three_together(options: list[tuple[str, dict[str, Any]]], lists: Callable[[dict[str, Any]], list[dict[str, Any]]],
+                    recipe_id: str) -> list[tuple[str, dict[str, Any]]]:
+    """The constraints, three together, under which ``lists`` (a search) lists only the recipe."""
+    found: list[tuple[str, dict[str, Any]]] = []
+    for a, b, c in itertools.combinations(options, 3):
+        merged = merge_filters(a[1], b[1])
+        merged = merge_filters(merged, c[1]) if merged is not None else None
+        if merged is not None and [r["id"] for r in lists(merged)] == [recipe_id]:
+            found.append((f"{a[0]}. {b[0]}. {c[0]}", merged))
+    return found
+
+
+@functools.cache
+def _cuisine_constraints(recipe_id: str) -> tuple[str, list[tuple[str, dict[str, Any]]]]:
+    """For a recipe no word or ingredient serves with the usual constraints: a word of its name, else an
+    ingredient of it, whose list (of several names) does not show it first, and the constraints (one, else
+    two, else three together) that leave it alone there, the cuisine among them ("Cuisine: Irish": the site
+    filters by it); ("", []) when none do. Named, a paired recipe was a coin toss for an agent that opens
+    the first listed recipe, and a unique name needed no choosing; a word whose list shows it first, a sure
+    pass."""
+    catalog = load_catalog()
+    recipe = catalog.by_id[recipe_id]
+    cuisine = (f"Cuisine: {recipe['cuisine']}", {"cuisine": recipe["cuisine"]})
+    searches: list[tuple[str, dict[str, Any], list[tuple[str, dict[str, Any]]], Callable[..., Any]]] = []
+    for word, listed in _asking_words(recipe, catalog):
+        options = constraint_options(recipe, catalog, [r for r in listed if r["id"] != recipe_id], wide=True)
+        searches.append((word, {"q": word}, [*options, cuisine], functools.partial(named_with, word, catalog)))
+    for ingredient, listed in _asking_ingredients(recipe, catalog):
+        options = [(suffix, f) for suffix, f in constraint_options(
+            recipe, catalog, [r for r in listed if r["id"] != recipe_id], wide=True) if f.get("include") != [ingredient]]
+        searches.append((ingredient, {"q": "", "include": [ingredient]}, [*options, cuisine],
+                         functools.partial(made_with, ingredient, catalog)))
+    for find in (_one_else_two, _three_together):
+        for key, search, options, lists in searches:
+            found = find(options, lists, recipe_id)
+            if found:
+                return key, [(suffix, {**f, **(merge_filters(search, f) or {})}) for suffix, f in found]
+    return "", []
+
+
 def look_alikes(recipe: dict[str, Any], catalog: Any, word: str | None = None,
                 ingredient: str | None = None) -> list[dict[str, Any]]:
     """The recipes a task for this one must be told from: those that share the word the intent asks by
@@ -250,12 +291,17 @@ def constraints_for(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dic
     _, by_ingredient = ingredient_constraints(recipe, catalog)
     if by_ingredient:
         return by_ingredient
-    if by_word:
-        return by_word
     if not unique and catalog is load_catalog():
         _, by_three = _three_constraints_by_word(recipe["id"])
         if by_three:
             return by_three
+    if catalog is load_catalog():
+        # The cuisine, a filter no other form uses, where nothing else leaves it alone (docs/verified.md).
+        _, by_cuisine = _cuisine_constraints(recipe["id"])
+        if by_cuisine:
+            return by_cuisine
+    if by_word:
+        return by_word
     good: list[tuple[str, dict[str, Any]]] = [("", {})] if unique else []
     good += [(suffix, f) for suffix, f in constraint_options(recipe, catalog) if singles_out(recipe, catalog, f)]
     return good
@@ -265,7 +311,7 @@ def merge_filters(a: dict[str, Any], b: dict[str, Any]) -> dict[str, Any] | None
     """Both filters at once (None when they set the same single-valued filter)."""
     merged = dict(a)
     for key, value in b.items():
-        if key in ("diet", "difficulty"):
+        if key in ("diet", "difficulty", "cuisine"):
             if key in merged:
                 return None
             merged[key] = value
@@ -366,6 +412,108 @@ def telling_step(recipe: dict[str, Any], catalog: Any) -> str | None:
     return None
 
 
+Treatments = dict[str, tuple[bool, str | None, str | None]]  # food_treatments' answer
+
+
+def _cooks(food: str, cook: str, t: Treatments) -> bool:
+    return food in t and t[food][1] == cook
+
+
+def _raw(food: str, t: Treatments) -> bool:
+    return food not in t or t[food][1] is None
+
+
+def _cuts(food: str, t: Treatments) -> bool:
+    return food in t and t[food][0]
+
+
+def _whole(food: str, t: Treatments) -> bool:
+    return food not in t or not t[food][0]
+
+
+def _serves(food: str, served: str, t: Treatments) -> bool:
+    # a rival that puts the food in no dish is not told apart by where this one serves it
+    return food in t and t[food][2] in (None, served)
+
+
+def step_statements(recipe: dict[str, Any]) -> list[tuple[str, Callable[[Treatments], bool]]]:
+    """What the recipe's steps do to each food it works with, in plain words ("cooks the egg in the microwave",
+    "cuts the tomato", "keeps the bread whole", "serves the lettuce in a bowl"), each with whether it holds
+    for another recipe (its food treatments). A recipe without the food does not cook, cut or serve it; one
+    that holds for what no step does (kept raw, kept whole) is taken to hold for it too (vacuously), so such
+    a statement never tells a recipe from one that lacks the food."""
+    out: list[tuple[str, Callable[[Treatments], bool]]] = []
+    for food, (cut, cook, served) in sorted(food_treatments(recipe_ops(recipe)).items()):
+        f = food.lower()
+        if cook in COOKED_IN:
+            out.append((COOKED_IN[cook].format(f=f), functools.partial(_cooks, food, cook)))
+        elif cook is None:
+            out.append((f"keeps the {f} raw", functools.partial(_raw, food)))
+        if cut:
+            out.append((f"{'cracks' if food == 'Egg' else 'cuts'} the {f}", functools.partial(_cuts, food)))
+        else:
+            out.append((f"keeps the {f} whole", functools.partial(_whole, food)))
+        if served:
+            out.append((f"serves the {f} {'on a plate' if served == 'Plate' else 'in a bowl'}",
+                        functools.partial(_serves, food, served)))
+    return out
+
+
+def _asking_ingredients(recipe: dict[str, Any], catalog: Any) -> Iterator[tuple[str, list[dict[str, Any]]]]:
+    """The recipe's ingredients that recipes of several names use, with what the site's ingredient filter
+    lists for each, where that list does not show the recipe first."""
+    for ingredient in sorted({i["name"] for i in recipe["ingredients"]}):
+        listed = made_with(ingredient, catalog)
+        if len({r["name"] for r in listed}) >= NAME_WORD_MIN_NAMES and listed[0]["id"] != recipe["id"]:
+            yield ingredient, listed
+
+
+# A step-told task asked by a word or ingredient: at most this many of the recipes listed use every food the
+# step names and the equipment it names (the site's ingredient and equipment filters narrow the list to
+# them); the agent opens and reads each to find the one whose steps do it, within the hard step budget.
+MAX_STEP_CANDIDATES = 6
+STEP_EQUIPMENT = {"toaster": "Toaster", "microwave": "Microwave", "pan": "Pan", "pot": "Pot", "cuts": "Knife",
+                  "plate": "Plate", "bowl": "Bowl"}
+
+
+def step_candidates(listed: list[dict[str, Any]], step: str) -> list[dict[str, Any]]:
+    """The listed recipes that use every food the step names and have the equipment it names: those an agent
+    must read, after the site's filters, to find the one whose steps do it."""
+    words = re.findall(r"[a-z]+", step.lower())
+    foods = {f for f in FOODS if f.lower() in words}
+    equipment = {STEP_EQUIPMENT[w] for w in words if w in STEP_EQUIPMENT}
+    return [r for r in listed if foods <= {i["name"] for i in r["ingredients"]} and equipment <= set(r["equipment"])]
+
+
+@functools.cache
+def asked_telling_step(recipe_id: str) -> tuple[dict[str, Any], str] | None:
+    """Hard, for a recipe with a same-named look-alike: (search, step) where the search is a word of its name
+    that the names of several recipes share (``{"q": word}``), else an ingredient that recipes of several
+    names use (``{"q": "", "include": [ingredient]}``), whose list does not show the recipe first, and the
+    step (what its steps do to a food, else two such things together: "cuts the tomato and cooks the egg in
+    the microwave") is true of it and of no other recipe listed; None when none has such a step. Named
+    outright, a step-told pair was a choice between two: opening the first listed recipe passed half of
+    them (issue 26). Among the several recipes listed only the steps single it out, and where two statements
+    are needed, only both together."""
+    catalog = load_catalog()
+    recipe = catalog.by_id[recipe_id]
+    if not any(r["name"] == recipe["name"] and r["id"] != recipe_id for r in catalog.recipes):
+        return None
+    statements = step_statements(recipe)
+    searches: list[tuple[dict[str, Any], list[dict[str, Any]]]] = [
+        ({"q": w}, listed) for w, listed in _asking_words(recipe, catalog)]
+    searches += [({"q": "", "include": [i]}, listed) for i, listed in _asking_ingredients(recipe, catalog)]
+    for size in (1, 2):  # one statement wherever one serves, under any search; else two together
+        for search, listed in searches:
+            rivals = [food_treatments(recipe_ops(r)) for r in listed if r["id"] != recipe_id]
+            for chosen in itertools.combinations(statements, size):
+                step = " and ".join(text for text, _ in chosen)
+                if (not any(all(holds(r) for _, holds in chosen) for r in rivals)
+                        and len(step_candidates(listed, step)) <= MAX_STEP_CANDIDATES):
+                    return search, step
+    return None
+
+
 def recipe_web_oracle(recipe: dict[str, Any], filters: dict[str, Any]) -> list[Any]:
     """Search with the constraint's filter, open the recipe, go to its last step.
 
@@ -380,11 +528,13 @@ def recipe_web_oracle(recipe: dict[str, Any], filters: dict[str, Any]) -> list[A
     return calls
 
 
-def step_web_oracle(recipe: dict[str, Any]) -> list[Any]:
-    """Search the name, then open the one recipe whose steps match and go to its last step (no filter
-    tells the look-alikes apart; the oracle knows which one it is)."""
+def step_web_oracle(recipe: dict[str, Any], filters: dict[str, Any] | None = None) -> list[Any]:
+    """Search the name (or the word or ingredient the intent asks by: ``filters``' q and include), then open
+    the one recipe whose steps match and go to its last step (no constraint filter tells the look-alikes
+    apart; the oracle knows which one it is)."""
     steps = len(recipe["steps"])
-    return [call("browser_goto", url=site_url("recipes", "/", q=recipe["name"])),
+    search = {k: v for k, v in (filters or {}).items() if k in ("q", "include")} or {"q": recipe["name"]}
+    return [call("browser_goto", url=site_url("recipes", "/", **search)),
             call("browser_goto", url=site_url("recipes", f"/recipe/{recipe['id']}", **({"step": steps} if steps > 1 else {})))]
 
 
@@ -470,12 +620,17 @@ def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str
     if buy and delivery_store(products) is None:
         return None
     kitchen = [call(c["tool"], **c["args"]) for c in plan_ops(scene, ops, delivered_types=buy)]
-    web = recipe_web_oracle(recipe, filters) if step is None else step_web_oracle(recipe)
+    web = recipe_web_oracle(recipe, filters) if step is None else step_web_oracle(recipe, filters)
     web_goals: list[Any] = [RecipeCompleted(recipe_id=recipe["id"])]
     word = filters.get("q")
     # Asked by an ingredient: the filters' first include (the constraint may add another).
     ingredient = filters["include"][0] if not word and "q" in filters else None
-    if step is not None:
+    if step is not None and word:
+        intent = (f'Cook the dish whose name has the word "{word.capitalize()}". Several recipes have '
+                  f'"{word.capitalize()}" in their name: follow the one that {step}.')
+    elif step is not None and ingredient:
+        intent = f'Cook the dish made with "{ingredient}". Several recipes use {ingredient}: follow the one that {step}.'
+    elif step is not None:
         intent = f"Cook {recipe['name']}. More than one recipe has that name: follow the one that {step}."
     elif word:
         intent = (f'Cook the dish whose name has the word "{word.capitalize()}" and that fits this: {suffix}. '
@@ -546,10 +701,16 @@ def generate() -> list[Task]:
         hard = 0
         # Told apart by a step where one is (the steps must be read); else by two constraints together, among
         # the recipes of a word of its name where one serves (several to choose from, not a pair).
+        # Among the recipes of a word of its name (else of an ingredient), where a step singles it out there,
+        # rather than between the two of its name (a coin toss for an agent that opens the first listed).
         step = telling_step(recipe, catalog)
         pairs = two_constraints(recipe, catalog)
         if step is None:
             pairs = word_pairs(recipe, catalog) or pairs
+        asked = asked_telling_step(recipe["id"]) if catalog is load_catalog() else None
+        if asked is not None and (step is not None or not pairs or "q" not in pairs[0][1]):
+            search, step = asked
+            pairs = [("", search)] if pairs else []
         if pairs and len(foods) >= 2:
             for scene in scenes:
                 if hard >= HARD_PER_RECIPE:
