@@ -337,11 +337,13 @@ def landmark_task(world: Any, tid: str, target: Any, article: Any, question_key:
         key, value, via, limit = cue
         city = world.city(target.city).name.split(" (")[0]
         x = article_of(via).title
-        intent = (f"You are at the corner of {corner} in {city}. Of the landmarks within about {limit} m of this "
-                  f"corner on foot, exactly one other than {x} {CUES[key].format(x=x)}, as their wiki articles "
-                  f"give {CUE_LABEL[key]}; other landmarks of the city share it too, farther away. Find it: "
-                  f"{x}'s wiki article gives the fact, the wiki's articles give each landmark's address, and the "
-                  "map measures walks. "
+        # "places with a wiki article", not "landmarks": the wiki files some of them under parks or
+        # squares, and a player read "landmarks" as the wiki's Landmarks category
+        intent = (f"You are at the corner of {corner} in {city}. Of the places with a wiki article (buildings, "
+                  f"parks, squares, stations) within about {limit} m of this corner on foot, exactly one other "
+                  f"than {x} {CUES[key].format(x=x)}, as their wiki articles give {CUE_LABEL[key]}; other places "
+                  f"of the city share it too, farther away. Find it: {x}'s wiki article gives the fact, the "
+                  "wiki's articles give each place's address, and the map measures walks. "
                   f"{WALK_RULE} When you are there, look it up on the wiki and answer: {question} "
                   + answer_rule(FORMS[question_key]))
     elif hard:
