@@ -62,6 +62,8 @@ def test_hard_traveling_needs_two_hops_and_the_range_together() -> None:
         assert wiki.by_poi_id(via.id).title in task["intent"] and f"within about {cue['range_m']} m" in task["intent"]
         assert not contains_phrase(task["intent"], cue["value"]), task["id"]  # the fact is read from X's article
         assert cue["key"] != task["metadata"]["question"], task["id"]
+        question = task["metadata"]["question"]
+        assert via.facts.get(question) != place.facts.get(question), (task["id"], "X's article answers it too")
         assert via.city == place.city and via.id != place.id and cue_value(cue["key"], via) == cue["value"]
         assert cue_value(cue["key"], place) == cue["value"], task["id"]
         peers = [p for p in landmarks_of(world) if p.city == place.city and p.id != place.id

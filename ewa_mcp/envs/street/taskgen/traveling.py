@@ -452,7 +452,9 @@ def hard_tasks(world: Any) -> list[Task]:
         if found is None:
             continue
         key, value, via, start, route, limit = found
-        questions = [k for k in answerable if k != key]  # the answer is another fact than the cue
+        # the answer is another fact than the cue, and not one X's article would give as well (X's own
+        # year would answer "built in 1931" for a target built in 1931 too, without finding the target)
+        questions = [k for k in answerable if k != key and via.facts.get(k) != target.facts.get(k)]
         if not questions:
             continue
         tasks.append(landmark_task(world, f"traveling-hard-{target.city}-{len(tasks):03d}", target, article,
