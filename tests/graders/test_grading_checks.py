@@ -150,6 +150,8 @@ def test_web_success_fails_when_a_different_recipe_was_completed(tmp_path: Path)
     assert other.web_success is False
     assert other.conditions[0].detail["completed_other_recipes"] == ["tomato-soup-meat"]
     assert other.conditions[0].detail["furthest_step"] == 2
+    changed = _web_episode(tmp_path, goal, [recipe_step("tomato-soup-veg", 5, 5), recipe_step("tomato-soup-meat", 5, 5)])
+    assert changed.web_success is False and changed.conditions[0].detail["chosen_recipe"] == "tomato-soup-meat"
     right = _web_episode(tmp_path, goal, [recipe_step("tomato-soup-veg", k, 5) for k in range(1, 6)])
     assert right.web_success is True
 

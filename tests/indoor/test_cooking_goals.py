@@ -151,8 +151,12 @@ def test_following_every_same_named_recipe_fails_the_recipe_goal():
     goal = RecipeCompleted(recipe_id="r004")
     assert check_recipe(goal, [step("r004", 7, 7)]).met is True
     assert check_recipe(goal, [step("r003", 2, 6), step("r004", 7, 7)]).met is True  # compared, then chose
+    # a look-alike read to its end to compare it (a step-told task asks for that), then the choice followed
+    compared = check_recipe(goal, [*(step("r003", k, 6) for k in range(1, 7)), *(step("r004", k, 7) for k in range(1, 8))])
+    assert compared.met is True and compared.detail["completed_other_recipes"] == ["r003"]
     both = check_recipe(goal, [step("r004", 7, 7), step("r003", 6, 6)])
-    assert both.met is False and "follow one recipe" in (both.note or "")
+    assert both.met is False and "the last recipe followed to its end is the one chosen" in (both.note or "")
+    assert both.detail["chosen_recipe"] == "r003"
     assert check_recipe(goal, [step("r003", 6, 6)]).met is False
 
 

@@ -88,14 +88,16 @@ def extra_order_lines(events: list[dict[str, Any]], goals: list[OrderPlaced]) ->
 
 
 def check_recipe(goal: RecipeCompleted, events: list[dict[str, Any]]) -> ConditionResult:
-    """The goal's recipe was shown to its last step, and no other recipe was: one choice means one choice
-    (issue 26). Opening the last step of every same-named recipe would otherwise pass without choosing;
-    reading a look-alike's first steps to compare is fine."""
+    """The goal's recipe is the one the episode chose: the last recipe it followed to its last step
+    (one choice means one choice, issue 26). Reading look-alikes to the end to compare them first is
+    what a step-told task asks for, so it does not count against the choice; finishing another recipe
+    after the goal's does (the choice changed), and opening the last step of every same-named recipe
+    passes only where the goal's happens to be opened last, and then cannot meet the kitchen goals of
+    the others it also "chose"."""
     steps = [e for e in events if e.get("site") == "recipes" and e.get("type") == "recipe_step"]
     best = 0
     last_step_of: int | None = None
-    completed = False
-    completed_other: list[str] = []
+    finished: list[str] = []  # recipe ids in the order they were shown at their last step
     for e in steps:
         step, of = _as_int(e.get("step")), _as_int(e.get("of"))
         if step is None or of is None or of < 1:
@@ -103,18 +105,22 @@ def check_recipe(goal: RecipeCompleted, events: list[dict[str, Any]]) -> Conditi
         if e.get("recipe_id") == goal.recipe_id:
             best = max(best, step)
             last_step_of = of
-            completed = completed or step == of
-        elif step == of:
-            completed_other.append(str(e.get("recipe_id")))
-    detail: dict[str, Any] = {"recipe_id": goal.recipe_id, "furthest_step": best, "of": last_step_of}
+        if step == of:
+            finished.append(str(e.get("recipe_id")))
+    chosen = finished[-1] if finished else None
+    detail: dict[str, Any] = {"recipe_id": goal.recipe_id, "furthest_step": best, "of": last_step_of,
+                              "chosen_recipe": chosen}
+    others = sorted({rid for rid in finished if rid != goal.recipe_id})
     note = None
-    if completed_other:
-        # The reference counted any finished recipe; a look-alike recipe, or every recipe, is a failure here.
-        detail["completed_other_recipes"] = sorted(set(completed_other))
-        note = ("other recipes were also followed to their last step: follow one recipe" if completed
+    if others:
+        detail["completed_other_recipes"] = others
+    if chosen is not None and chosen != goal.recipe_id:
+        # The reference counted any finished recipe; the last one finished is the one chosen here.
+        note = ("another recipe was followed to its last step after this one: the last recipe followed to its "
+                "end is the one chosen" if goal.recipe_id in finished
                 else "a different recipe was followed to its last step")
     return ConditionResult(side="web", kind=goal.kind, description=_describe(goal),
-                           met=completed and not completed_other, detail=detail, note=note)
+                           met=chosen == goal.recipe_id, detail=detail, note=note)
 
 
 def check_order(goal: OrderPlaced, events: list[dict[str, Any]],
