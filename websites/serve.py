@@ -28,10 +28,21 @@ SITES: dict[str, str] = {site.name: site.app for site in DECLARED}
 DEFAULT_PORTS = {site.name: site.port for site in DECLARED}
 
 
-def _free_port(host: str) -> int:
-    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
-        s.bind((host, 0))
-        return s.getsockname()[1]
+def _listening_socket(host: str, port: int) -> socket.socket:
+    """A socket bound and listening on (host, port); port 0 takes a free one. The socket is held from here
+    to the site's server: asking for a free port, closing it and binding it again later let another
+    process on the machine take it in between (seen as "address already in use" with many servers
+    starting at once)."""
+    sock = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+    try:
+        sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        sock.bind((host, port))
+        sock.listen(2048)
+    except OSError as exc:
+        sock.close()
+        raise RuntimeError(f"cannot listen on {host}:{port} for an embedded web site ({exc.strerror}); "
+                           "leave site_ports unset to take free ports, or free that port") from exc
+    return sock
 
 
 def available_sites() -> dict[str, Any]:
@@ -54,7 +65,14 @@ class SiteServer:
         self.host = host
         factories = available_sites()
         ports = ports or {}
-        self.ports = {name: ports.get(name) or _free_port(host) for name in factories}
+        self._sockets: dict[str, socket.socket] = {}
+        try:
+            for name in factories:
+                self._sockets[name] = _listening_socket(host, ports.get(name) or 0)
+        except RuntimeError:
+            self._close_sockets()
+            raise
+        self.ports = {name: sock.getsockname()[1] for name, sock in self._sockets.items()}
         self.urls = {name: f"http://{host}:{port}" for name, port in self.ports.items()}
         kwargs: dict[str, Any] = {"urls": self.urls, "data_dir": data_dir}
         if emit is not None:
@@ -88,7 +106,8 @@ class SiteServer:
             config = uvicorn.Config(app, host=self.host, port=self.ports[name], log_level="warning",
                                     access_log=False, lifespan="on")
             self._servers.append(uvicorn.Server(config))
-        tasks = [asyncio.create_task(s.serve()) for s in self._servers]
+        tasks = [asyncio.create_task(s.serve(sockets=[self._sockets[name]]))
+                 for name, s in zip(self.apps, self._servers)]
         while not all(s.started for s in self._servers):
             if any(t.done() for t in tasks):
                 for t in tasks:
@@ -104,6 +123,11 @@ class SiteServer:
             server.should_exit = True
         if self._thread is not None:
             self._thread.join(timeout=10)
+        self._close_sockets()
+
+    def _close_sockets(self) -> None:
+        for sock in self._sockets.values():
+            sock.close()
 
     close = stop
 
