@@ -37,11 +37,33 @@ TEMPLATES = [
 ]
 
 
+DIRECTIONS = ("East ", "West ", "North ", "South ")
+
+
+def corner_phrase(name: str) -> str:
+    """An intersection as people say it: "5th Avenue & East 44th Street & West 44th Street" (one street whose
+    East and West halves meet at the avenue) is "5th Avenue and 44th Street"; a true three-way corner keeps
+    its three streets."""
+    streets = name.split(" & ")
+    # "South Street" is a name, not the south half of "Street"
+    bare = [next((s[len(d):] for d in DIRECTIONS if s.startswith(d) and " " in s[len(d):]), s) for s in streets]
+    kept: list[str] = []
+    for street, base in zip(streets, bare):
+        twins = [s for s, b in zip(streets, bare) if b == base]
+        word = base if len(twins) > 1 else street
+        if word not in kept:
+            kept.append(word)
+    return " and ".join(kept if len(kept) > 1 else streets)
+
+
 def describe(place: Any) -> str:
     """How a task names a place: landmarks by name, addresses and intersections as written on signs."""
     if place.kind == "intersection":
-        return f"the corner of {place.name.replace(' & ', ' and ')}"
-    return f"{place.name} ({place.address})" if place.address else place.name
+        return f"the corner of {corner_phrase(place.name)}"
+    if not place.address or place.address.startswith(place.name):
+        # "Market Square (Market St & Forbes Ave)" is already the name with its address
+        return place.address or place.name
+    return f"{place.name} ({place.address})"
 
 
 def candidate_places(world: Any, city: str, rng: Any) -> list[Any]:

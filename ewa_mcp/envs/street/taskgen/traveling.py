@@ -17,6 +17,7 @@ from ewa_mcp.envs.street.goals import ReachedPlace, StreetStart
 from ewa_mcp.websites.wiki import store as wiki
 from ewa_mcp.taskgen.answer_checks import METRES, YEARS, answer_rule, committed_answer
 from ewa_mcp.taskgen.common import WALK_RULE, call, rng_for, site_url, step_budget
+from .navigation import corner_phrase
 
 TARGET = 130
 HARD_TARGET = 30  # landmarks described only by their look (>= 15 % of the domain)
@@ -332,7 +333,7 @@ def landmark_task(world: Any, tid: str, target: Any, article: Any, question_key:
     corner, which single it out only together; one without describes it only by its look (no address, no
     name)."""
     question, answer = QUESTIONS[question_key][0], QUESTIONS[question_key][1](target.facts[question_key])
-    corner = start.name.replace(" & ", " and ")
+    corner = corner_phrase(start.name)
     if cue is not None:
         key, value, via, limit = cue
         city = world.city(target.city).name.split(" (")[0]
