@@ -25,6 +25,9 @@ PAIR_TRIES = 4000
 # answer is the dearest). Cycled, so "the cheapest total" and "all three in stock" each pick it a third of
 # the time.
 RIVAL_KINDS = (("budget", "budget"), ("stock", "budget"), ("stock", "stock"))
+# Which of every eight hard tasks name stores: not every other one, so the evenly spaced samples of
+# `ewa-mcp eval --sample` (every 6th, 12th or 3rd task) hold both forms.
+NAMED_SLOTS = (1, 2, 4, 7)
 # The named form's (answer's distance rank among the three named, among all four stores), cycled: nearest of
 # all, the middle named one (second or third of all), farthest of all. With the other form's second and third
 # of all, no distance rank among all the stores answers more than about a third of the hard tasks.
@@ -523,12 +526,12 @@ def pair_tasks(ctx: Context) -> list[Task]:
         return items, start, answer, budget, totals, named
 
     for n in slots(out):
-        # Odd tasks name three stores, even ones ask for the nearest within the budget. The named tasks cycle
-        # through every pair of (answer's distance rank, rivals' failures); the others alternate the answer's
-        # distance rank among all four stores (second, third), which that form cannot make first or last,
-        # so the named form makes it first or last as often as it can (NAMED_RANKS).
-        want["named"] = n % 2 == 1
-        cell = n // 2
+        # Half the tasks name three stores (NAMED_SLOTS), the others ask for the nearest within the budget.
+        # The named tasks cycle through every pair of (answer's distance rank, rivals' failures); the others
+        # alternate the answer's distance rank among all four stores (second, third), which that form cannot
+        # make first or last, so the named form makes it first or last as often as it can (NAMED_RANKS).
+        want["named"] = n % 8 in NAMED_SLOTS
+        cell = sum(1 for m in range(n) if (m % 8 in NAMED_SLOTS) == want["named"])  # the form's own count
         want["rank"], want["rank_all"] = NAMED_RANKS[cell % 6] if want["named"] else (1 + cell % 2, 1 + cell % 2)
         want["kinds"] = RIVAL_KINDS[(cell % 3 + cell // 3) % 3]
         want["position"] = (cell // 2) % 3
