@@ -49,6 +49,37 @@ def greedy_order(origin: Any, stops: list[Any]) -> list[str]:
     return out
 
 
+def hard_cues(store: TaskStore) -> None:
+    """Shopping hard, one cue at a time: the target's distance rank among all four stores, and among the three
+    stores a named-stores task names, its rank by walk, by total price, and whether it alone has all in stock."""
+    from ewa_mcp.websites.shop import catalog
+
+    cues: Counter[str] = Counter()
+    pair = [t for t in store.all("shopping") if t.difficulty == "hard"]
+    for t in pair:
+        meta, start = t.metadata, t.start.embodied.node
+        by_walk = sorted(meta["store_nodes"], key=lambda sid: walk_m(start, meta["store_nodes"][sid]))
+        cues[("nearest", "second nearest", "third nearest", "farthest")[by_walk.index(meta["store_id"])]
+             + " of all stores"] += 1
+        named = meta.get("named_stores")
+        if not named:
+            continue
+        cues["named-stores tasks"] += 1
+        rank = sorted(named, key=lambda sid: walk_m(start, meta["store_nodes"][sid])).index(meta["store_id"])
+        cues[("nearest", "middle", "farthest")[rank] + " named"] += 1
+        cues["cheapest total named"] += min(named, key=lambda sid: meta["totals"][sid]) == meta["store_id"]
+        stocked = [sid for sid in named if all(catalog.stock(p, size, sid) > 0
+                                               for p, size in zip(meta["products"], meta["sizes"], strict=True))]
+        cues["the only named store with all in stock"] += stocked == [meta["store_id"]]
+    n_named = cues.pop("named-stores tasks")
+    print(f"\nshopping hard ({len(pair)} tasks, {n_named} naming stores): the cue alone picks the target")
+    for cue in [f"{r} of all stores" for r in ("nearest", "second nearest", "third nearest", "farthest")] + [
+            f"{r} named" for r in ("nearest", "middle", "farthest", "cheapest total")] + [
+            "the only named store with all in stock"]:
+        hits, n = cues[cue], (n_named if "named" in cue else len(pair)) or 1
+        print(f"  {cue}: {hits} of {n} ({100 * hits / n:.0f} %)")
+
+
 def main() -> int:
     store = TaskStore([ROOT / "tasks"])
     nav: Counter[str] = Counter()
@@ -99,6 +130,7 @@ def main() -> int:
     for (difficulty, fam), cell in sorted(cells.items()):
         n = cell.pop("tasks")
         print(f"  {difficulty} {fam} ({n} tasks): " + ", ".join(f"{r} {h} ({100 * h / n:.0f} %)" for r, h in cell.items()))
+    hard_cues(store)
     sizes = Counter(t.difficulty or "-" for t in store.all("shopping"))
     for difficulty in ("easy", "medium", "hard"):
         rows = [c for (d, _), c in cells.items() if d == difficulty]

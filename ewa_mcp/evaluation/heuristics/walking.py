@@ -208,9 +208,10 @@ def shopping_items(intent: str) -> tuple[list[tuple[Any, str]], str | None]:
     if m:
         product = next((p for p in catalog.load_products() if p.name == m.group(1)), None)
         return ([(product, product.sizes[0].label)], product.sizes[0].label) if product else ([], None)
-    m = re.search(r"How many calories are in (.+?) and (.+?) per serving", intent)
-    if m:
-        product = next((p for p in catalog.load_products() if p.name == m.group(1)), None)
+    m = re.search(r"How many calories are in (.+?) per serving", intent)
+    if m:  # two or three products named ("A and B", "A, B and C"): the first is the one whose name leads
+        product = max((p for p in catalog.load_products() if m.group(1).startswith(p.name)),
+                      key=lambda p: len(p.name), default=None)
         if product is None or product.nutrition is None:
             return [], None
         return [(product, product.sizes[0].label)], str(product.nutrition.calories)

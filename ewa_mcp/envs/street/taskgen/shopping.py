@@ -20,8 +20,24 @@ MAX_WALK_M = 2200.0
 # Hard basket tasks: no total within this many dollars of the budget, and no tie for "cheapest for the three".
 PAIR_MARGIN = 0.25
 PAIR_TRIES = 4000
-# Of the draws, the share in the named-stores form (which any store can answer, where prices favour some).
-NAMED_SHARE = 0.1  # few draws fit every part of a pair task; enough of them to spread the pickup stores
+# How the two rival stores of the named-stores form fail: both over the budget (the answer is the cheapest of
+# the three), one sold out of an item and cheaper plus one over the budget, both sold out and cheaper (the
+# answer is the dearest). Cycled, so "the cheapest total" and "all three in stock" each pick it a third of
+# the time.
+RIVAL_KINDS = (("budget", "budget"), ("stock", "budget"), ("stock", "stock"))
+# Which of every eight hard tasks name stores: not every other one, so the evenly spaced samples of
+# `ewa-mcp eval --sample` (every 6th, 12th or 3rd task) hold both forms.
+NAMED_SLOTS = (1, 2, 4, 7)
+# The order the named tasks take the cycles' cells in (a permutation of the 30, so every total stays the
+# same). In id order the 6-cell cycles alias with the evenly spaced samples: every named task of a 10-task
+# sample had the answer nearest. This is random.Random(4).sample(range(30), 30), the first seed whose 5- and
+# 10-task samples hold each value of each cycle within one task of a third, so a sample measures the suite.
+NAMED_ORDER = (7, 9, 3, 23, 12, 15, 4, 2, 22, 0, 25, 17, 28, 1, 29, 8, 14, 5, 26, 21, 16, 11, 27, 20, 19, 10, 13, 6,
+               24, 18)
+# The named form's (answer's distance rank among the three named, among all four stores), cycled: nearest of
+# all, the middle named one (second or third of all), farthest of all. With the other form's second and third
+# of all, no distance rank among all the stores answers more than about a third of the hard tasks.
+NAMED_RANKS = ((0, 0), (1, 1), (2, 3), (0, 0), (1, 2), (2, 3))
 
 
 def buy_oracle(product: Any, size: str, store: Any) -> list[Any]:
@@ -312,14 +328,16 @@ def calorie_tasks(ctx: Context) -> list[Task]:
     counts = ctx.store_counts()
     foods = [p for p in ctx.products if p.nutrition is not None]
     for n in slots(out):
-        low, high = rng.sample(foods, 2)
-        if _nutrition(low).calories == _nutrition(high).calories:
+        # Three products, so "the first named" (or any one place) answers about a third of the questions.
+        three = rng.sample(foods, 3)
+        if len({_nutrition(p).calories for p in three}) < 3:
             continue
-        if _nutrition(low).calories > _nutrition(high).calories:
-            low, high = high, low
-        # The lower product is named first in half the tasks and second in the other half, so neither
-        # "the first one" nor "the second one" answers without reading the calories.
-        a, b = (low, high) if n % 2 == 0 else (high, low)
+        low, *higher = sorted(three, key=lambda p: _nutrition(p).calories)
+        # The lowest product is named first, second or third in turn, so no place in the question answers
+        # without reading the calories.
+        rng.shuffle(higher)
+        named = [*higher]
+        named.insert(n % 3, low)
         size = low.sizes[0].label  # not named in the intent: it would tell which product is lower
         start = rng.choice(ctx.starts)
         # The named store decides too: it is not the store an agent ignoring the name would pick (the
@@ -330,18 +348,20 @@ def calorie_tasks(ctx: Context) -> list[Task]:
         if not stocked or None in ignored:
             continue
         store_id = min(rng.sample(stocked, len(stocked)), key=lambda sid: counts[sid])  # the least used so far
-        intent = (f"How many calories are in {a.name} and {b.name} per serving? I need to select the lower one: "
+        intent = (f"How many calories are in {named[0].name}, {named[1].name} and {named[2].name} per serving? "
+                  f"I need to select the lowest one: "
                   f"order it, in the first size the shop lists for it, for pickup at {ctx.stores[store_id].name}, "
                   f"walk there from {start.name}, and tell me its calories per serving. {WALK_RULE} "
                   + answer_rule("Answer with that number of calories."))
-        check = committed_answer(str(_nutrition(low).calories), [high.name, str(_nutrition(high).calories)],
+        check = committed_answer(str(_nutrition(low).calories),
+                                 [r for p in higher for r in (p.name, str(_nutrition(p).calories))],
                                  context=[low.name, *(s.label for s in low.sizes), _nutrition(low).serving_size],
                                  numbers=CALORIES)
         if any(t.intent == intent for t in out):
             continue  # the same question twice
         counts[store_id] += 1
         task = _task(ctx, f"shopping-calories-{n:03d}", intent, start, low, size, store_id, rng, answer=check)
-        task.metadata["named_products"] = [a.id, b.id]
+        task.metadata["named_products"] = [p.id for p in named]
         out.append(task)
     return out
 
@@ -429,6 +449,11 @@ def pair_tasks(ctx: Context) -> list[Task]:
     rng = rng_for("shopping", "pair")
     counts = ctx.store_counts()
 
+    want: dict[str, Any] = {"named": False, "rank": 0, "rank_all": 0, "kinds": RIVAL_KINDS[0], "position": 0}
+
+    def rank_among_all(start: Any, store_id: str) -> int:
+        return sorted(ctx.stores, key=lambda sid: ctx.walk(start, sid).distance_m).index(store_id)
+
     def draw() -> Any:
         products = rng.sample(ctx.products, BASKET_ITEMS)
         items = [(p, rng.choice(p.sizes).label) for p in products]
@@ -440,7 +465,7 @@ def pair_tasks(ctx: Context) -> list[Task]:
         cheapest_each = {catalog.cheapest_store(p.id, size) for p, size in items}
         if len(cheapest_each) < 2:
             return None  # one store cheapest for every item would answer "cheapest" item by item
-        if rng.random() < NAMED_SHARE:
+        if want["named"]:
             return named_draw(items, start, totals, stocked, cheapest_each)
         for k in range(1, len(stocked)):  # never the nearest store with all three: the budget must decide
             answer = stocked[k]
@@ -458,33 +483,66 @@ def pair_tasks(ctx: Context) -> list[Task]:
                 return None  # "cheapest for the three" must point elsewhere, unambiguously
             if answer in cheapest_each:
                 return None  # no item's cheapest store is the answer
+            # The answer's place among all the stores by distance alternates (second or third nearest: the
+            # nearest with all three is over the budget and a farther one is within it), so no distance
+            # rank answers most tasks.
+            if rank_among_all(start, answer) != want["rank_all"]:
+                return None
             return items, start, answer, budget, totals, None
         return None
 
     def named_draw(items: list[tuple[Any, str]], start: Any, totals: dict[str, float | None],
                    stocked: list[str], cheapest_each: set[str]) -> Any:
-        """The other form: two stores named, the one that can sell all three within the budget is the
-        answer, the other is nearer (so "the nearer one" fails) and sells all three, over the budget; the
-        other is the cheapest store of one of the items and the answer is no item's cheapest (so picking by
-        any one price fails: only the sum decides). Any store can be the answer this way, which spreads the
-        pickup stores where prices favour some stores (issue 26)."""
+        """The other form: three stores named, one of which has all three in stock and sells them within the
+        budget. Each rival fails by one thing: stock (it lists all three, one is sold out there, and the three
+        cost less there than at the answer) or the budget (all three in stock, over it by a margin). The kinds
+        of failure and the answer's place by distance among the three are cycled over the tasks, so that
+        neither the nearest, the middle, the farthest, the cheapest total nor "all three in stock" alone picks
+        the answer in more than about a third of them; only reading both stock and the sum does. The answer is
+        no item's cheapest store (picking by any one price fails). Any store can be the answer this way, which
+        spreads the pickup stores where prices favour some stores (issue 26)."""
+        kinds: tuple[str, str] = want["kinds"]
         choices = [sid for sid in stocked if sid not in cheapest_each]
         if not choices:
             return None
-        answer: str = rng.choice(choices)
-        rivals = [sid for sid in ctx.stores if sid != answer and totals[sid] is not None and sid in cheapest_each
-                  and ctx.walk(start, answer).distance_m - ctx.walk(start, sid).distance_m >= 100]
-        if not rivals:
+        # The least used store so far: the other form's answers gather at two stores (prices favour them).
+        answer: str = min(rng.sample(choices, len(choices)), key=lambda sid: counts[sid])
+        total = totals[answer]
+        assert total is not None
+        sold_out = [sid for sid in ctx.stores if sid != answer and totals[sid] is not None and sid not in stocked
+                    and totals[sid] <= total - PAIR_MARGIN]  # type: ignore[operator]
+        over = [sid for sid in stocked if sid != answer]
+        pools = [sold_out if kind == "stock" else over for kind in kinds]
+        pairs = [(a, b) for a in pools[0] for b in pools[1] if a != b]
+        if not pairs:
             return None
-        rival = rng.choice(rivals)
-        budget = pair_budget(totals[answer], [totals[rival]])  # type: ignore[arg-type,list-item]
+        rivals = list(rng.choice(pairs))
+        budget = pair_budget(total, [totals[sid] for sid, kind in zip(rivals, kinds) if kind == "budget"])  # type: ignore[misc]
         if budget is None:
             return None
-        named = [answer, rival]
-        rng.shuffle(named)  # the answer is named first in about half the tasks
+        by_distance = sorted([answer, *rivals], key=lambda sid: ctx.walk(start, sid).distance_m)
+        gaps = [ctx.walk(start, b).distance_m - ctx.walk(start, a).distance_m
+                for a, b in zip(by_distance, by_distance[1:])]
+        if by_distance.index(answer) != want["rank"] or rank_among_all(start, answer) != want["rank_all"] \
+                or min(gaps) < 100:
+            return None  # the answer's distance rank as cycled, and no two named stores too close to call
+        rng.shuffle(rivals)
+        named = [*rivals]
+        named.insert(want["position"], answer)  # the answer is named first, second or third in turn
         return items, start, answer, budget, totals, named
 
     for n in slots(out):
+        # Half the tasks name three stores (NAMED_SLOTS), the others ask for the nearest within the budget.
+        # The named tasks cycle through every pair of (answer's distance rank, rivals' failures); the others
+        # alternate the answer's distance rank among all four stores (second, third), which that form cannot
+        # make first or last, so the named form makes it first or last as often as it can (NAMED_RANKS).
+        want["named"] = n % 8 in NAMED_SLOTS
+        cell = sum(1 for m in range(n) if (m % 8 in NAMED_SLOTS) == want["named"])  # the form's own count
+        if want["named"]:
+            cell = NAMED_ORDER[cell % len(NAMED_ORDER)]
+        want["rank"], want["rank_all"] = NAMED_RANKS[cell % 6] if want["named"] else (1 + cell % 2, 1 + cell % 2)
+        want["kinds"] = RIVAL_KINDS[(cell % 3 + cell // 3) % 3]
+        want["position"] = (cell // 2) % 3
         picked = balanced(draw, lambda c: c[2], counts, tries=PAIR_TRIES)  # the pickup store spreads over the stores
         if picked is None:
             continue
@@ -499,10 +557,10 @@ def pair_tasks(ctx: Context) -> list[Task]:
                       f"or less together, pick the one nearest to {start.name} on foot; then walk there from "
                       f"{start.name} to pick them up. {WALK_RULE}")
         else:
-            first, second = (ctx.stores[sid].name for sid in named)
-            intent = (f"Buy me {_listing(items)} together, in one order for pickup at {first} or {second}: "
-                      f"whichever of the two has all three in stock and sells the three for {money} or less "
-                      f"in all. Then walk there from {start.name} to pick them up. {WALK_RULE}")
+            first, second, third = (ctx.stores[sid].name for sid in named)
+            intent = (f"Buy me {_listing(items)} together, in one order for pickup at {first}, {second} or "
+                      f"{third}: whichever of the three has all three items in stock and sells them for {money} "
+                      f"or less in all. Then walk there from {start.name} to pick them up. {WALK_RULE}")
         if any(t.intent == intent for t in out):
             counts[store_id] -= 1
             continue  # the same question twice
