@@ -7,8 +7,8 @@ from pathlib import Path
 
 from ewa_mcp.cli import build_parser
 from ewa_mcp.evaluation.heuristics import NAMES, heuristic_agent
+from ewa_mcp.evaluation.heuristics.table import HEURISTICS
 from ewa_mcp.evaluation.heuristics.agents import (
-    HEURISTICS,
     best_city,
     named_products,
     prior_answer,

@@ -19,13 +19,10 @@ import hashlib
 from collections import defaultdict
 from collections.abc import Iterable
 from dataclasses import dataclass, replace
-from typing import TYPE_CHECKING
+from typing import Any
 
 from .cities import CITIES
-from .hardness import hard_city_keys
-
-if TYPE_CHECKING:
-    from .locations import Location
+from .cue_sets import hard_city_keys
 
 
 @dataclass(frozen=True)
@@ -117,14 +114,15 @@ def _offset(city_key: str) -> int:
     return int.from_bytes(hashlib.sha256(f"shared-street|{city_key}".encode()).digest()[:4], "big")
 
 
-def with_shared_streets(locations: Iterable[Location]) -> list[Location]:
-    """The locations, each hard one on one of its country's shared street names (its own where it already
+def with_shared_streets(locations: Iterable[Any]) -> list[Any]:
+    """The locations (locations.py's ``Location``, untyped here: this module sits below that one), each
+    hard one on one of its country's shared street names (its own where it already
     is one): a city's hard locations take different names (in a seeded rotation), so no two of its tasks
     share an answer."""
     locations = list(locations)
     hard = hard_city_keys(CITIES[loc.city_key] for loc in locations)
     taken: dict[str, int] = defaultdict(int)
-    out: list[Location] = []
+    out: list[Any] = []
     for loc in locations:
         if loc.difficulty == "easy" or loc.city_key not in hard:
             out.append(loc)

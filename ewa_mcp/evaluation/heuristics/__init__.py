@@ -17,7 +17,7 @@ NAMES = ("prior", "geo-lexical", "wiki-search", "order-everywhere", "first-liste
 
 def heuristic_agent(name: str) -> Any:
     """A fresh heuristic agent by name (KeyError names the choices)."""
-    from .agents import HEURISTICS
+    from .table import HEURISTICS
 
     try:
         return HEURISTICS[name]()

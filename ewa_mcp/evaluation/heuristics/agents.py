@@ -420,11 +420,7 @@ class FirstRecipeAgent:
         await finish(s)
 
 
-def _table() -> dict[str, type]:
-    from .walking import WALKING  # the walking agents build on this module's helpers
-
-    return {a.name: a for a in (PriorAgent, GeoLexicalAgent, WikiSearchAgent, OrderEverywhereAgent, FirstListedAgent,
-                                CookEverythingAgent, LookAlikeAgent, FirstRecipeAgent, *WALKING)}
-
-
-HEURISTICS: dict[str, type] = _table()
+# The agents of this module; table.py lists them with the walking agents (walking.py builds on the helpers
+# here, so the table lives above both).
+AGENTS = (PriorAgent, GeoLexicalAgent, WikiSearchAgent, OrderEverywhereAgent, FirstListedAgent,
+          CookEverythingAgent, LookAlikeAgent, FirstRecipeAgent)

@@ -18,6 +18,7 @@ from urllib.parse import urlencode
 from ...websites.shop import catalog
 from ...websites.wiki import store as wiki
 from ..agents import Session
+from .agents import finish, named_products, question_of, visible
 
 # ------------------------------------------------------------------ the map, as its site resolves and routes
 @lru_cache(maxsize=1)
@@ -464,7 +465,3 @@ class StopEliminationAgent:
 
 
 WALKING = (DirectionsWalkerAgent, StepLimitStoreAgent, NearestStoreAgent, CheapestStoreAgent, StopEliminationAgent)
-
-# Last, as agents.py lists these agents in its table at its own end: whichever module loads first, the
-# names each needs from the other are defined by then.
-from .agents import finish, named_products, question_of, visible  # noqa: E402

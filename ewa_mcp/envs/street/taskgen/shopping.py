@@ -25,15 +25,6 @@ PAIR_TRIES = 4000
 # answer is the dearest). Cycled, so "the cheapest total" and "all three in stock" each pick it a third of
 # the time.
 RIVAL_KINDS = (("budget", "budget"), ("stock", "budget"), ("stock", "stock"))
-# Which of every eight hard tasks name stores: not every other one, so the evenly spaced samples of
-# `ewa-mcp eval --sample` (every 6th, 12th or 3rd task) hold both forms.
-NAMED_SLOTS = (1, 2, 4, 7)
-# The order the named tasks take the cycles' cells in (a permutation of the 30, so every total stays the
-# same). In id order the 6-cell cycles alias with the evenly spaced samples: every named task of a 10-task
-# sample had the answer nearest. This is random.Random(4).sample(range(30), 30), the first seed whose 5- and
-# 10-task samples hold each value of each cycle within one task of a third, so a sample measures the suite.
-NAMED_ORDER = (7, 9, 3, 23, 12, 15, 4, 2, 22, 0, 25, 17, 28, 1, 29, 8, 14, 5, 26, 21, 16, 11, 27, 20, 19, 10, 13, 6,
-               24, 18)
 # The named form's (answer's distance rank among the three named, among all four stores), cycled: nearest of
 # all, the middle named one (second or third of all), farthest of all. With the other form's second and third
 # of all, no distance rank among all the stores answers more than about a third of the hard tasks.
@@ -531,15 +522,20 @@ def pair_tasks(ctx: Context) -> list[Task]:
         named.insert(want["position"], answer)  # the answer is named first, second or third in turn
         return items, start, answer, budget, totals, named
 
+    # Which tasks name stores, and which cell of its form's cycles each takes, come from a seeded shuffle of
+    # the task numbers: any pattern in the ids (every eighth task named, cells in id order) lets tasks some
+    # ids apart agree on the answer (tests/core/test_id_order.py).
+    order = rng_for("shopping-pair-forms").sample(range(PER_TEMPLATE), PER_TEMPLATE)
+    named_ids = set(order[: PER_TEMPLATE // 2])
+    cells = {m: i for i, m in enumerate(m for m in order if m in named_ids)}
+    cells.update({m: i for i, m in enumerate(m for m in order if m not in named_ids)})
     for n in slots(out):
-        # Half the tasks name three stores (NAMED_SLOTS), the others ask for the nearest within the budget.
-        # The named tasks cycle through every pair of (answer's distance rank, rivals' failures); the others
-        # alternate the answer's distance rank among all four stores (second, third), which that form cannot
-        # make first or last, so the named form makes it first or last as often as it can (NAMED_RANKS).
-        want["named"] = n % 8 in NAMED_SLOTS
-        cell = sum(1 for m in range(n) if (m % 8 in NAMED_SLOTS) == want["named"])  # the form's own count
-        if want["named"]:
-            cell = NAMED_ORDER[cell % len(NAMED_ORDER)]
+        # Half the tasks name three stores, the others ask for the nearest within the budget. The named tasks
+        # cycle through every pair of (answer's distance rank, rivals' failures); the others alternate the
+        # answer's distance rank among all four stores (second, third), which that form cannot make first or
+        # last, so the named form makes it first or last as often as it can (NAMED_RANKS).
+        want["named"] = n in named_ids
+        cell = cells[n]
         want["rank"], want["rank_all"] = NAMED_RANKS[cell % 6] if want["named"] else (1 + cell % 2, 1 + cell % 2)
         want["kinds"] = RIVAL_KINDS[(cell % 3 + cell // 3) % 3]
         want["position"] = (cell // 2) % 3
