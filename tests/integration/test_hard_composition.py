@@ -12,10 +12,8 @@ steps and fails with its look-alike's, and its intent names no missing food alth
 
 from __future__ import annotations
 
-import json
 import shutil
 
-import anyio
 import pytest
 
 from ewa_mcp.core.paths import tasks_dir
@@ -26,11 +24,10 @@ from ewa_mcp.envs.kitchen.taskgen.cooking import (MAX_STEP_CANDIDATES, asked_tel
 from ewa_mcp.envs.kitchen.taskgen.outcomes import grade_kitchen, recipe_outcome
 from ewa_mcp.envs.kitchen.taskgen.recipe_goals import recipe_ops
 from ewa_mcp.envs.street.world import get_world
-from ewa_mcp.evaluation.agents import OracleAgent
-from ewa_mcp.evaluation.runner import run_eval
-from ewa_mcp.graders import grade_run
 from ewa_mcp.websites.recipes.catalog import load_catalog
 from ewa_mcp.websites.shop import catalog as shop
+
+from .helpers import play
 
 needs_browser = pytest.mark.skipif(
     not (shutil.which("chromium") or shutil.which("chromium-browser")), reason="no Chromium: apt-get install chromium")
@@ -69,17 +66,6 @@ def with_store(task: Task, order_at: str, walk_to: str) -> Task:
     calls += [ToolCall(tool="street_move", args={"neighbour": n}) for n in route.nodes[1:]]
     calls += [ToolCall(tool="street_stop", args={}), ToolCall(tool="finish_episode", args={})]
     return task.model_copy(update={"oracle": calls})
-
-
-def play(task: Task, tmp_path, name: str) -> bool:
-    folder = tmp_path / name / "tasks" / task.domain
-    folder.mkdir(parents=True)
-    (folder / "t.json").write_text(json.dumps([task.model_dump(mode="json")]), "utf-8")
-    run = tmp_path / name / "run"
-    anyio.run(lambda: run_eval([task], OracleAgent(), run_dir=run, task_dirs=[folder.parent], workers=1,
-                               progress=False))
-    (episode,) = grade_run(run).episodes
-    return episode.overall_success
 
 
 @needs_browser

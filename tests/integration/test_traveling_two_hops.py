@@ -5,20 +5,17 @@ to another landmark sharing the fact that stands outside the range."""
 
 from __future__ import annotations
 
-import json
 import shutil
 
-import anyio
 import pytest
 
 from ewa_mcp.core.paths import tasks_dir
 from ewa_mcp.core.taskmodel import Task, TaskStore, ToolCall
 from ewa_mcp.envs.street.taskgen.traveling import QUESTIONS, cue_value, landmarks_of
 from ewa_mcp.envs.street.world import get_world
-from ewa_mcp.evaluation.agents import OracleAgent
-from ewa_mcp.evaluation.runner import run_eval
-from ewa_mcp.graders import grade_run
 from ewa_mcp.websites.wiki import store as wiki
+
+from .helpers import play
 
 needs_browser = pytest.mark.skipif(
     not (shutil.which("chromium") or shutil.which("chromium-browser")), reason="no Chromium: apt-get install chromium")
@@ -47,17 +44,6 @@ def go_to(task: Task, place) -> Task:
               ToolCall(tool="browser_goto", args={"url": f"wiki:/wiki/{article.slug}"}),
               ToolCall(tool="finish_episode", args={"answer": answer})]
     return task.model_copy(update={"oracle": calls})
-
-
-def play(task: Task, tmp_path, name: str) -> bool:
-    folder = tmp_path / name / "tasks" / task.domain
-    folder.mkdir(parents=True)
-    (folder / "t.json").write_text(json.dumps([task.model_dump(mode="json")]), "utf-8")
-    run = tmp_path / name / "run"
-    anyio.run(lambda: run_eval([task], OracleAgent(), run_dir=run, task_dirs=[folder.parent], workers=1,
-                               progress=False))
-    (episode,) = grade_run(run).episodes
-    return episode.overall_success
 
 
 @needs_browser
