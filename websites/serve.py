@@ -89,8 +89,10 @@ class SiteServer:
         self._thread = threading.Thread(target=self._run, name="ewa-websites", daemon=True)
         self._thread.start()
         if not self._ready.wait(timeout):
+            self.stop()  # nothing is left listening for a start that is given up
             raise RuntimeError(f"the embedded web sites did not start within {timeout}s")
         if self._error is not None:
+            self.stop()
             raise RuntimeError(f"the embedded web sites failed to start: {self._error}") from self._error
         return self
 
