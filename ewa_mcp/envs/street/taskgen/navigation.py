@@ -146,6 +146,17 @@ def article_slug(place: Any) -> str:
 
 
 def stops_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any], count: int) -> list[Task]:
+    """A city's hard tasks, ids navigation-via-<city>-NNN, in two forms: about half (the slots a seeded shuffle
+    picks, so the id says nothing of the form) ask for the shortest order on foot, the others for the wiki's
+    order by year built."""
+    slots = list(range(count))
+    rng_for("navigation-via-form", city).shuffle(slots)
+    shortest = shortest_order_tasks(world, resolver, city, places, sorted(slots[: count // 2]))
+    return sorted([*year_order_tasks(world, resolver, city, places, sorted(slots[count // 2:])), *shortest],
+                  key=lambda t: t.id)
+
+
+def year_order_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any], slots: list[int]) -> list[Task]:
     """Hard by composition (issue 26, principle 6): four stops whose order only the wiki gives (oldest first
     by the year built), ending at the newest. Nothing the agent sees before the work tells the order: the
     intent lists the stops in an independent seeded shuffle (never checked against the answer), and every
@@ -164,6 +175,7 @@ def stops_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any]
         return walks[(a.id, b.id)]
 
     tries = 0
+    count = len(slots)
     while len(tasks) < count and tries < count * 300 and len(dated) >= STOPS:
         tries += 1
         origin = rng.choice(places)
@@ -191,7 +203,7 @@ def stops_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any]
             continue
         if longest > STOPS_MAX_M:
             continue
-        n = len(tasks)
+        n = slots[len(tasks)]
         listed = order[:]
         rng_for("navigation-via-listed", city, n).shuffle(listed)  # its own stream: independent of the answer
         used.add(key)
@@ -224,7 +236,163 @@ def stops_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any]
                       "start_lng": world.node(origin.node).lng, "origin_node": origin.node,
                       "destination_node": order[-1].node, "route_steps": sum(len(x.steps) for x in legs),
                       "turns": sum(turns(x) for x in legs), "stops": [p.id for p in order],
-                      "listed": [p.id for p in listed], "years": years, "origin_id": origin.id},
+                      "listed": [p.id for p in listed], "years": years, "origin_id": origin.id,
+                      "form": "year order"},
+        ))
+    return tasks
+
+
+SHORTEST_NEAR_M = 600.0  # every stop within this of the origin as the crow flies
+SHORTEST_MARGIN_M = 100.0  # the best order beats the second best by at least this (the map rounds to 1 m)
+SHORTEST_SHARE = 1 / 3  # no tempting shortcut (shortcut_orders) may give the answer in more of a city's tasks
+SHORTEST_TEMPLATES = [
+    "Starting at {origin}, visit {stops} in the order that makes the shortest walk on foot, and end your walk "
+    "at the last of them. The order is yours to find: compare the walking distances the map site gives (from "
+    "the start to each place and between each two places; walking distances, not straight lines). " + WALK_RULE,
+    "I am at {origin} and want to see {stops}, all four, in whichever order makes my whole walk shortest, "
+    "ending at the last one I visit. Work the order out from the walking distances the map site gives between "
+    "my start and each place and between the places themselves, then walk it. " + WALK_RULE,
+]
+
+
+def walk_length(leg: Any, origin: Any, order: Any) -> float:
+    """Metres of the walk from ``origin`` past ``order`` in turn, leg by leg as the map gives each leg."""
+    return float(sum(leg(a, b) for a, b in zip([origin, *order], order)))
+
+
+def shortcut_orders(world: Any, leg: Any, origin: Any, stops: list[Any], listed: list[Any]) -> dict[str, list[str]]:
+    """The orders a shortcut gives instead of working through all 24 (the ids, first to last): the order the
+    intent lists; always the nearest stop not yet seen on foot (greedy nearest-next); nearest to farthest from
+    the start as the crow flies; nearest to farthest from the start on foot. ``leg(a, b)`` is the map's
+    walking distance in metres."""
+    here, left, greedy = origin, list(stops), []
+    while left:
+        here = min(left, key=lambda p: leg(here, p))
+        left.remove(here)
+        greedy.append(here.id)
+    start = world.node(origin.node)
+    crow = sorted(stops, key=lambda p: haversine_m(start.lat, start.lng, world.node(p.node).lat,
+                                                   world.node(p.node).lng))
+    return {"listed": [p.id for p in listed], "greedy nearest-next": greedy,
+            "straight line from the start": [p.id for p in crow],
+            "walk from the start": [p.id for p in sorted(stops, key=lambda p: leg(origin, p))]}
+
+
+def chain_goals(world: Any, city: str, order: list[Any]) -> list[Any]:
+    """Each stop passed after the one before it (a chain), the walk ending at the last."""
+    return [*[PassedPlace(city=city, node=p.node, lat=world.node(p.node).lat, lng=world.node(p.node).lng,
+                          place_id=p.id, after=waypoint(world, order[k - 1]) if k else None)
+              for k, p in enumerate(order[:-1])],
+            reached(world, city, order[-1])]
+
+
+def chain_passes(world: Any, city: str, order: list[Any], nodes: list[str]) -> bool:
+    """Whether a walk over ``nodes`` (ending at the last) meets the chain of ``order`` as the grader checks it."""
+    from ..checks import check_passed_place
+
+    state = {"city": city, "path_points": [[world.node(n).lat, world.node(n).lng] for n in nodes]}
+    end = world.node(nodes[-1])
+    goals = chain_goals(world, city, order)
+    last = goals[-1]
+    return all(check_passed_place(g, state, None).met for g in goals[:-1]) and \
+        haversine_m(end.lat, end.lng, last.lat, last.lng) <= last.radius_m
+
+
+def shortest_order_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any],
+                         slots: list[int]) -> list[Task]:
+    """Hard by composition and discrimination (issue 26, principle 6): four named stops, visited in the order
+    that makes the shortest walk on foot, ending at the last. The order is the agent's to find from the map's
+    walking distances (ten of them: the start to each stop, each two stops), working through the 24 orders;
+    each distance is stated plainly, but only all of them together give the order. Kept draws: the best order
+    beats the second best by SHORTEST_MARGIN_M; no shortcut (shortcut_orders) gives it in more than
+    SHORTEST_SHARE of the city's tasks, greedy nearest-next never; and a walk that follows the map past the
+    stops in any other order fails the chain (the grader passes only the best order, even though a stop
+    passed early on the way to another does not count against a walk)."""
+    rng = rng_for("navigation-shortest", city)
+    stops_pool = [p for p in places if p.kind not in ("intersection", "address")
+                  and describe(p).endswith(")") and resolves_to(resolver, p)]
+    tasks: list[Task] = []
+    used: set[tuple[str, ...]] = set()
+    hits: dict[str, int] = {}
+    walks: dict[tuple[str, str], Any] = {}
+
+    def route(a: Any, b: Any) -> Any:
+        if (a.id, b.id) not in walks:
+            walks[(a.id, b.id)] = world.directions(a.id, b.id)
+        return walks[(a.id, b.id)]
+
+    def leg(a: Any, b: Any) -> float:
+        return float(route(a, b).distance_m)
+
+    tries = 0
+    while len(tasks) < len(slots) and tries < len(slots) * 1000:
+        tries += 1
+        origin = rng.choice(places)
+        here = world.node(origin.node)
+        near = [p for p in stops_pool if haversine_m(here.lat, here.lng, p.lat, p.lng) <= SHORTEST_NEAR_M]
+        if len(near) < STOPS:
+            continue
+        chosen = sorted(rng.sample(near, STOPS), key=lambda p: p.id)
+        key = (origin.id, *(p.id for p in chosen))
+        if key in used or len({origin.node, *(p.node for p in chosen)}) < STOPS + 1 \
+                or not resolves_to(resolver, origin):
+            continue
+        try:
+            pairs = [(origin, p) for p in chosen] + [(a, b) for a in chosen for b in chosen if a.id != b.id]
+            if min(leg(a, b) for a, b in pairs) < VIA_MIN_LEG_M:
+                continue
+            ranked = sorted(permutations(chosen), key=lambda perm: walk_length(leg, origin, perm))
+        except ValueError:
+            continue
+        order = list(ranked[0])
+        best, second = walk_length(leg, origin, order), walk_length(leg, origin, ranked[1])
+        if second - best < SHORTEST_MARGIN_M or best > STOPS_MAX_M:
+            continue
+        n = slots[len(tasks)]
+        listed = list(chosen)
+        rng_for("navigation-shortest-listed", city, n).shuffle(listed)  # its own stream, never redrawn
+        target = [p.id for p in order]
+        matched = [name for name, ids in shortcut_orders(world, leg, origin, chosen, listed).items() if ids == target]
+        if "greedy nearest-next" in matched or len(matched) > 1 or \
+                any(hits.get(name, 0) + 1 > SHORTEST_SHARE * len(slots) for name in matched):
+            continue
+        legs = [route(a, b) for a, b in zip([origin, *order], order)]
+        nodes = legs[0].nodes + [x for lg in legs[1:] for x in lg.nodes[1:]]
+        wrong_passes = False
+        for perm in ranked[1:]:
+            walk = [route(a, b) for a, b in zip([origin, *perm], perm)]
+            if chain_passes(world, city, order, walk[0].nodes + [x for lg in walk[1:] for x in lg.nodes[1:]]):
+                wrong_passes = True
+                break
+        if wrong_passes or not chain_passes(world, city, order, nodes):
+            continue
+        for name in matched:
+            hits[name] = hits.get(name, 0) + 1
+        used.add(key)
+        # every distance the order needs, looked up as an agent would (start to each stop, each two stops)
+        lookups = [(origin, p) for p in listed] + [(a, b) for i, a in enumerate(listed) for b in listed[i + 1:]]
+        oracle = [*[call("browser_goto", url=site_url("map", "/directions", **{"from": a.name, "to": b.name}))
+                    for a, b in lookups],
+                  call("switch_environment", target="embodied", message="walk the shortest order"),
+                  *walk_oracle(nodes), call("finish_episode")]
+        task_rng = rng_for("navigation-shortest", city, n)
+        stops = ", ".join(describe(p) for p in listed[:-1]) + " and " + describe(listed[-1])
+        tasks.append(Task(
+            id=f"navigation-via-{city}-{n:03d}",
+            domain="navigation",
+            difficulty="hard",
+            intent=task_rng.choice(SHORTEST_TEMPLATES).format(origin=describe(origin), stops=stops),
+            start=start_state(world, city, origin, task_rng),
+            web_goals=[PageVisited(site="map", path_prefix="/directions")],
+            embodied_goals=chain_goals(world, city, order),
+            step_limit=step_budget("navigation", "hard", len(oracle)),
+            oracle=oracle,
+            metadata={"shortest_path_m": round(best, 1), "start_lat": here.lat, "start_lng": here.lng,
+                      "origin_node": origin.node, "destination_node": order[-1].node,
+                      "route_steps": sum(len(x.steps) for x in legs), "turns": sum(turns(x) for x in legs),
+                      "stops": target, "listed": [p.id for p in listed], "origin_id": origin.id,
+                      "form": "shortest order", "second_best_m": round(second, 1),
+                      "margin_m": round(second - best, 1)},
         ))
     return tasks
 
