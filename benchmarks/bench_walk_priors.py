@@ -21,7 +21,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from ewa_mcp.core.taskmodel import TaskStore  # noqa: E402
-from ewa_mcp.envs.street.taskgen.navigation import nearest_first  # noqa: E402
+from ewa_mcp.envs.street.taskgen.navigation import nearest_first, shortcut_orders  # noqa: E402
 from ewa_mcp.evaluation.heuristics.walking import (  # noqa: E402
     elimination_end,
     named_stores,
@@ -80,11 +80,39 @@ def hard_cues(store: TaskStore) -> None:
         print(f"  {cue}: {hits} of {n} ({100 * hits / n:.0f} %)")
 
 
+def shortest_form(store: TaskStore) -> None:
+    """Navigation hard, the shortest-order form: each tempting shortcut's whole order against the answer (the
+    best order on the map's walking distances); the generator keeps each at a third or less."""
+    rules: Counter[str] = Counter()
+    tasks = [t for t in store.all("navigation") if t.difficulty == "hard" and t.metadata.get("form") == "shortest order"]
+    for t in tasks:
+        origin_text, listed_text = stops_of(t.intent) or ("", [])
+        origin, listed = resolve(origin_text), [resolve(x) for x in listed_text]
+        order = t.metadata["stops"]
+        for rule, ids in shortcut_orders(world(), lambda a, b: walk_m(a.node, b.node), origin, listed, listed).items():
+            rules[f"order: {rule}"] += ids == order
+        by_walk = sorted(listed, key=lambda p: walk_m(origin.node, p.node))
+        rules["end: farthest from the start on foot"] += by_walk[-1].id == order[-1]
+        rules["end: nearest the start on foot"] += by_walk[0].id == order[-1]
+        # the end cue combined: the farthest stop last, the other three nearest-next before it
+        rules["order: greedy nearest-next to the others, then the farthest"] += \
+            [*greedy_order(origin, by_walk[:-1]), by_walk[-1].id] == order
+        rules["order: reverse of listed"] += [p.id for p in listed][::-1] == order
+        rules["order: shortest walk past all (the answer)"] += [p.id for p in min(
+            permutations(listed), key=lambda perm: sum(walk_m(a.node, b.node) for a, b in zip([origin, *perm], perm)))] == order
+    margins = sorted(t.metadata["margin_m"] for t in tasks)
+    print(f"\nnavigation hard, shortest-order form ({len(tasks)} tasks; chance 1 in 24 for an order, 1 in 4 for an end; "
+          f"the best order beats the second by {margins[0]:.0f} to {margins[-1]:.0f} m):")
+    for rule, hits in rules.items():
+        print(f"  {rule}: {hits} ({100 * hits / max(len(tasks), 1):.0f} %)")
+
+
 def main() -> int:
     store = TaskStore([ROOT / "tasks"])
+    shortest_form(store)
     nav: Counter[str] = Counter()
     for t in store.all("navigation"):
-        if t.difficulty != "hard":
+        if t.difficulty != "hard" or t.metadata.get("form") != "year order":
             continue
         origin_text, listed_text = stops_of(t.intent) or ("", [])
         origin, listed = resolve(origin_text), [resolve(x) for x in listed_text]
@@ -103,11 +131,11 @@ def main() -> int:
         nav["order: the others as listed, then elimination's end (stop-elimination)"] += \
             [i for i in ids if i != eliminated] + [eliminated] == order
         nav["order: reverse of listed"] += ids[::-1] == order
-        nav["order: nearest stop first"] += greedy_order(origin, listed) == order
+        nav["order: greedy nearest-next (the nearest stop not yet seen, on foot)"] += greedy_order(origin, listed) == order
         nav["order: shortest walk past all"] += [p.id for p in min(
             permutations(listed), key=lambda perm: sum(walk_m(a.node, b.node) for a, b in zip([origin, *perm], perm)))] == order
     n = nav.pop("tasks")
-    print(f"navigation hard ({n} tasks): the rule's last stop is the newest (end; chance 1 in 4) / its whole order is "
+    print(f"navigation hard, year-order form ({n} tasks): the rule's last stop is the newest (end; chance 1 in 4) / its whole order is "
           "the wiki's (order; chance 1 in 24, and only the whole order passes: each stop is graded after the one before)")
     for rule, hits in nav.items():
         print(f"  {rule}: {hits} ({100 * hits / n:.0f} %)")

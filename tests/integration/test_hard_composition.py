@@ -4,8 +4,9 @@ Shopping (played through the real server, Chromium and street graph, graded from
 oracle of a budget task passes; ordering the three items at the nearest store that has them (ignoring the
 budget) fails, so does ordering them at any item's cheapest store, and so does ordering at the right store
 but walking to that nearer one. Navigation (the same way):
-four stops in the wiki's order pass; the same walk in the order the intent lists them fails, and so does
-the right last stop with two stops before it swapped. Cooking (graded offline with
+four stops in the answer's order (the wiki's by year built, or the shortest on foot) pass; the same walk in
+the order the intent lists them fails, and so does the right last stop with two stops before it swapped (and,
+for the shortest order, the greedy nearest-next order). Cooking (graded offline with
 the kitchen's own checks on real simulator outcomes): a recipe told apart only by a step passes with its own
 steps and fails with its look-alike's, and its intent names no missing food although two must be ordered.
 """
@@ -23,6 +24,7 @@ from ewa_mcp.envs.kitchen.taskgen.cooking import (MAX_STEP_CANDIDATES, asked_tel
                                                   step_statements, telling_step)
 from ewa_mcp.envs.kitchen.taskgen.outcomes import grade_kitchen, recipe_outcome
 from ewa_mcp.envs.kitchen.taskgen.recipe_goals import recipe_ops
+from ewa_mcp.envs.street.taskgen.navigation import shortcut_orders
 from ewa_mcp.envs.street.world import get_world
 from ewa_mcp.websites.recipes.catalog import load_catalog
 from ewa_mcp.websites.shop import catalog as shop
@@ -180,11 +182,15 @@ def test_a_step_told_task_passes_its_own_steps_and_fails_its_look_alikes(store):
 
 
 @needs_browser
-def test_stops_in_the_intents_order_fail_and_in_the_wikis_order_pass(store, tmp_path):
+@pytest.mark.parametrize("form", ["year order", "shortest order"])
+def test_stops_in_the_intents_order_fail_and_in_the_answers_order_pass(store, tmp_path, form):
+    """Both hard forms: the wiki's order by year built, and the shortest order on foot (where the greedy
+    nearest-next order, the tempting shortcut, fails too)."""
     world = get_world()
     # a task whose listing ends elsewhere (the listing is a plain shuffle, so some end at the newest)
     task = next(t for t in sorted(store.all("navigation"), key=lambda t: t.id)
-                if t.difficulty == "hard" and t.metadata["listed"][-1] != t.metadata["stops"][-1])
+                if t.difficulty == "hard" and t.metadata["form"] == form
+                and t.metadata["listed"][-1] != t.metadata["stops"][-1])
     meta = task.metadata
     assert play(task, tmp_path, "oracle-stops")
     origin = world.places.get(meta["origin_id"]) or world.place(meta["origin_id"])
@@ -212,3 +218,8 @@ def test_stops_in_the_intents_order_fail_and_in_the_wikis_order_pass(store, tmp_
         early = world.places[order[k]].node
         passes_again = early in nodes[nodes.index(world.places[order[k + 1]].node):]
         assert passes_again or not play(walking(order), tmp_path, f"swap-{k}"), k
+    if form == "shortest order":
+        stops = [world.places[p] for p in meta["listed"]]
+        greedy = shortcut_orders(world, lambda a, b: world.directions(a.id, b.id).distance_m, origin, stops,
+                                 stops)["greedy nearest-next"]
+        assert greedy != meta["stops"] and not play(walking(greedy), tmp_path, "greedy")

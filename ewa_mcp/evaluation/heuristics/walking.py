@@ -123,7 +123,10 @@ _NAV = (r"Starting at (?P<o>.+?), guide me step-by-step to (?P<d>.+?)\. Get walk
         r"Show me the fastest walking route from (?P<o>.+?) to (?P<d>.+?) on the map",
         r"I am at (?P<o>.+?)\. Look up how to walk to (?P<d>.+?) online")
 _STOPS = (r"Starting at (?P<o>.+?), walk to (?P<s>.+?) in the order they were built",
-          r"I am at (?P<o>.+?) and want to see (?P<s>.+?), from the oldest building")
+          r"I am at (?P<o>.+?) and want to see (?P<s>.+?), from the oldest building",
+          # the shortest-order form: the order is the agent's to find from the map's walking distances
+          r"Starting at (?P<o>.+?), visit (?P<s>.+?) in the order that makes the shortest walk",
+          r"I am at (?P<o>.+?) and want to see (?P<s>.+?), all four, in whichever order")
 
 
 def split_listed(text: str) -> list[str]:
