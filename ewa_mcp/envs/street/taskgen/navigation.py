@@ -6,7 +6,8 @@ Difficulty: a direct route with at most one turn is easy, one with more turns me
 composition (issue 26, principle 6): four named stops visited in the order the wiki gives (oldest
 building first, by the year built), ending at the newest; the intent lists them in an independent shuffle
 (passed_place goals for the first three, each after the one before, reached_place for the last, a wiki
-page view of each)."""
+page view of each). About half the hard tasks (slots a seeded shuffle picks) ask instead for the order that
+makes the shortest walk on foot, from the map's walking distances, graded by the same chain."""
 
 from __future__ import annotations
 
