@@ -26,7 +26,8 @@ __all__ = ["hard_city_keys", "is_hard", "shared_cues", "task_difficulty"]
 
 @lru_cache(maxsize=1)
 def _hard_cities() -> frozenset[str]:
-    return hard_city_keys(loc.city for loc in LOCATIONS_LIST)
+    return hard_city_keys((loc.city for loc in LOCATIONS_LIST),
+                          pedestrian={loc.city_key for loc in LOCATIONS_LIST if loc.pedestrian and loc.difficulty != "easy"})
 
 
 def is_hard(loc: Location) -> bool:
