@@ -14,7 +14,7 @@ no local transport is told apart by what they do show, never by a vehicle it lac
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Mapping
 from itertools import combinations
 from typing import Any
 
@@ -113,7 +113,7 @@ def hard_city_keys(in_set: Iterable[City], pedestrian: Iterable[str] = ()) -> fr
     return frozenset(hard)
 
 
-def deciding_sets(shown: Mapping[str, Any], rivals: Mapping[str, Mapping[str, Any]]) -> list[Sequence[str]]:
+def deciding_sets(shown: Mapping[str, Any], rivals: Mapping[str, Mapping[str, Any]]) -> list[tuple[str, ...]]:
     """The smallest sets of cue kinds that together fit no rival: what a player must put together."""
     kinds = seen_kinds(shown)
     for size in range(1, len(kinds) + 1):
