@@ -226,6 +226,11 @@ def test_absence_is_no_cue_and_what_is_seen_must_be_listed():
     assert fits(shown, with_trams, ("trees", "transport"))
     # A yellow tram seen: a city whose article lists blue ones does not.
     assert not fits({**shown, "transport": ("tram:yellow",)}, with_trams, ("transport",))
+    # The climate shows only as the sky: a clear Mediterranean sky rules out no semi-arid city, while a grey
+    # oceanic one rules out a continental city (clear blue) and a highland horizon shows its mountains.
+    assert fits({**shown, "climate": "mediterranean"}, {**shown, "climate": "semi_arid"}, ("climate",))
+    assert not fits({**shown, "climate": "oceanic"}, {**shown, "climate": "continental"}, ("climate",))
+    assert not fits({**shown, "climate": "highland"}, {**shown, "climate": "semi_arid"}, ("climate",))
 
 
 def test_rival_cities_have_no_location_and_a_real_gazetteer_record():

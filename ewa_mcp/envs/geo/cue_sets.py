@@ -7,8 +7,8 @@ other cities of its country that have a wiki article: the location set's and the
 still fits at least one rival, and all of them together fit none. Finding it takes three cues or more
 put together; the first two that fit leave a real choice.
 
-A rival *fits* what is seen when its article could describe it: the same buildings and climate, and
-every tree, vehicle and sign language seen among its own. Absence is no cue: a city whose views show
+A rival *fits* what is seen when its article could describe it: the same buildings, a climate whose sky
+looks the same (SKY_ALIKE), and every tree, vehicle and sign language seen among its own. Absence is no cue: a city whose views show
 no local transport is told apart by what they do show, never by a vehicle it lacks.
 """
 
@@ -26,6 +26,16 @@ from .styles import CLIMATE
 CUE_KINDS = ("arch", "climate", "trees", "transport", "langs")
 # Kinds a view shows several of: what is seen must be among what the article lists.
 _SET_KINDS = frozenset({"trees", "transport", "langs"})
+# A view shows the climate only as its sky (styles.CLIMATE) and an article names it by its seasons; these
+# skies read alike (clear and blue; hazy), so a player cannot rule out one climate of a group by the other.
+SKY_ALIKE: tuple[frozenset[str], ...] = (
+    frozenset({"mediterranean", "semi_arid", "continental"}),
+    frozenset({"humid_subtropical", "arid"}),
+)
+
+
+def _same_sky(one: str, other: str) -> bool:
+    return one == other or any(one in group and other in group for group in SKY_ALIKE)
 
 
 def shared_cues(city: City) -> dict[str, Any]:
@@ -49,6 +59,9 @@ def fits(shown: Mapping[str, Any], other: Mapping[str, Any], kinds: Iterable[str
     for kind in kinds:
         if kind in _SET_KINDS:
             if not set(shown[kind]) <= set(other[kind]):
+                return False
+        elif kind == "climate":
+            if not _same_sky(shown[kind], other[kind]):
                 return False
         elif shown[kind] != other[kind]:
             return False

@@ -11,6 +11,10 @@ the rest, so the tempting shortcut — the first two cues that fit — names a r
 Their conventions are this world's, stated in their articles in the same words as every other city's,
 chosen to be plausible for the real city; they are not a survey. No view ever shows a rival city (no
 location stands in one), so nothing here can leak an answer.
+
+A rival that differs only in climate has one whose sky reads apart from the hard city's (a grey cloudy
+oceanic sky against a clear continental one, mountains on a highland horizon, a humid haze, towering
+tropical cumulus); never a Mediterranean against a semi-arid sky, which look alike (cue_sets.SKY_ALIKE).
 """
 
 from __future__ import annotations
@@ -142,8 +146,8 @@ RIVAL_CITIES_LIST: list[City] = [
     # Casablanca (French colonial buildings, Mediterranean, Mediterranean trees).
     _("rabat", 2538475, "Rabat", "MA", "mediterranean", "537", arch="french_colonial", trees=("jacaranda", "palm"),
       about="Capital of Morocco at the mouth of the Bou Regreg."),
-    _("meknes", 2542715, "Meknes", "MA", "semi_arid", "535", arch="french_colonial", trees=MED,
-      about="Imperial city of the Saïss plain."),
+    _("ifrane", 2546917, "Ifrane", "MA", "highland", "535", arch="french_colonial", trees=MED,
+      about="Mountain resort of the Middle Atlas, laid out in the 1930s."),
     _("tangier", 2530335, "Tangier", "MA", "mediterranean", "539", arch="north_african", trees=MED,
       about="Port city on the Strait of Gibraltar."),
     # Edinburgh (stone terraces, linden/maple/plane, white and red trams): Sheffield differs in its trams.
@@ -175,14 +179,14 @@ RIVAL_CITIES_LIST: list[City] = [
     # Thessaloniki (Mediterranean buildings and climate, Mediterranean trees): Athens differs in its trees.
     _("chania", 260114, "Chania", "GR", "mediterranean", "28210", "XN", arch="ottoman", trees=MED, aliases=("Chaniá",),
       about="Port town of western Crete around a Venetian harbour."),
-    _("larissa", 258576, "Larissa", "GR", "semi_arid", "2410", "PI", trees=("olive", "orange", *MED), aliases=("Lárisa",),
-      about="Capital of Thessaly on its wide plain."),
-    # Athens (Mediterranean buildings and climate, olive and orange trees): Larissa above differs in climate.
+    _("ioannina", 261779, "Ioannina", "GR", "highland", "2651", "IN", trees=("olive", "orange", *MED),
+      aliases=("Ioánnina",), about="Capital of Epirus on a mountain lake."),
+    # Athens (Mediterranean buildings and climate, olive and orange trees): Ioannina above differs in climate.
     _("heraklion", 261745, "Heraklion", "GR", "mediterranean", "2810", "HK", arch="ottoman", trees=("olive", "orange"),
       aliases=("Irakleio", "Iráklion"), about="Capital of Crete, a port behind Venetian walls."),
     # Seville (Mediterranean buildings and climate, orange trees and palms): Madrid has other trees.
-    _("murcia", 2513416, "Murcia", "ES", "semi_arid", "968", trees=("orange", "palm"),
-      about="City of the Segura valley amid irrigated orchards, the huerta."),
+    _("granada", 2517117, "Granada", "ES", "highland", "958", trees=("orange", "palm"),
+      about="City of Andalusia below the Sierra Nevada, crowned by the Alhambra."),
     _("cordoba-es", 2519240, "Córdoba", "ES", "mediterranean", "957", arch="iberian", trees=("orange", "palm"),
       aliases=("Cordoba",), about="City on the Guadalquivir around its great mosque-cathedral."),
     # São Paulo (modern buildings, humid subtropical, camphor/palm/plane).
