@@ -32,10 +32,11 @@ LEVELS = ("continent", "country", "city", "street")
 DIFFICULTIES = ("easy", "medium", "hard")
 
 
-def sample_tasks(store: TaskStore, per_cell: int, domains: list[str] | None) -> list[Task]:
+def sample_tasks(store: TaskStore, per_cell: int, domains: list[str] | None,
+                 difficulties: list[str] | None = None) -> list[Task]:
     """``per_cell`` tasks of each domain and difficulty, evenly spaced over the sorted ids (as --sample)."""
     tasks: list[Task] = []
-    for difficulty in DIFFICULTIES:
+    for difficulty in difficulties or DIFFICULTIES:
         try:
             tasks += select_tasks(store, None, per_cell, domains, [difficulty])
         except ValueError:
@@ -100,11 +101,13 @@ def main() -> int:
     parser.add_argument("--agent", action="append", choices=NAMES, help="an agent (repeatable; default: all)")
     parser.add_argument("--sample", type=int, default=2, help="tasks per domain and difficulty (default 2)")
     parser.add_argument("--domain", action="append", help="restrict to a domain (repeatable)")
+    parser.add_argument("--difficulty", action="append", choices=DIFFICULTIES,
+                        help="restrict to a difficulty (repeatable)")
     parser.add_argument("--tasks-dir", default=str(ROOT / "tasks"))
     args = parser.parse_args()
     task_dirs = [Path(args.tasks_dir)]
     store = TaskStore(task_dirs)
-    tasks = sample_tasks(store, args.sample, args.domain)
+    tasks = sample_tasks(store, args.sample, args.domain, args.difficulty)
     print(f"{len(tasks)} tasks: {dict(Counter((t.domain, t.difficulty) for t in tasks))}\n")
     for name in args.agent or NAMES:
         with tempfile.TemporaryDirectory(prefix=f"heuristic-{name}-") as tmp:

@@ -1,5 +1,6 @@
-"""Hard geolocation locations show no deciding cue anywhere the agent can walk, and the near-lane sentence
-of a view across the street agrees with the driving side whichever way the view faces.
+"""Hard geolocation locations show no deciding cue anywhere the agent can walk, their shared cues name the
+city only three or more together, and the near-lane sentence of a view across the street agrees with the
+driving side whichever way the view faces.
 
 A deciding cue names one city of the location set: a street or landmark name that only one city has
 (Avenida Paulista, Pike Street, a district line such as "Bela Vista"), a city's name, a telephone
@@ -14,16 +15,22 @@ from functools import lru_cache
 
 import pytest
 
+from ewa_mcp.envs.geo.articles import country_title
 from ewa_mcp.envs.geo.cities import CITIES
+from ewa_mcp.envs.geo.cue_sets import (candidates, combination_gaps, country_rivals, deciding_sets, fits,
+                                       shared_cues)
 from ewa_mcp.envs.geo.describe import describe_view, describe_view_cues
 from ewa_mcp.envs.geo.graph import START, build_graph
 from ewa_mcp.envs.geo.hardness import task_difficulty
 from ewa_mcp.envs.geo.locations import LOCATIONS_LIST, SURVEYED_LOCATIONS_LIST, Location
 from ewa_mcp.envs.geo.names import normalize
 from ewa_mcp.envs.geo.scene import compose_view
+from ewa_mcp.envs.geo.rival_cities import RIVAL_CITIES
 from ewa_mcp.envs.geo.shared_streets import SHARED_STREETS
+from ewa_mcp.envs.geo.styles import CLIMATE
 from ewa_mcp.envs.geo.taskgen.geolocation import STEP_LIMITS
 from ewa_mcp.geometry import FOUR_DIRECTIONS
+from ewa_mcp.websites.wiki import store
 
 HARD = [loc for loc in LOCATIONS_LIST if task_difficulty(loc) == "hard"]
 SET_CITIES = sorted({loc.city_key for loc in LOCATIONS_LIST})
@@ -142,6 +149,98 @@ def test_every_country_with_shared_names_has_several_cities_in_the_set():
     for iso in SHARED_STREETS:
         cities = {key for key in SET_CITIES if CITIES[key].iso == iso}
         assert len(cities) >= 2, f"{iso}: a shared name of a country with one city in the set names that city"
+
+
+# ------------------------------------------------------------------ three cues together, never two
+def shown_cues(loc: Location) -> dict[str, tuple[str, ...] | str]:
+    """What every view within the step limit shows of each shared cue kind, read off the composed views:
+    the buildings, the climate (its sky), every tree kind, every vehicle other than a car (with its colour,
+    as the city's transport lists it), and the sign languages the shop signs are written in."""
+    archs, climates, trees, transport = set(), set(), set(), set()
+    climate_key = {id(climate): key for key, climate in CLIMATE.items()}
+    for sp in reachable(loc, STEP_LIMITS["embodied"]):
+        for heading in FOUR_DIRECTIONS:
+            spec = compose_view(loc, sp, heading)
+            archs.add(spec.arch_key)
+            climates.add(climate_key[id(spec.climate)])
+            trees |= {kind for kind, _side, _depth in spec.trees}
+            transport |= {f"{v.kind}:{v.colour_words}" if v.colour_words else v.kind
+                          for v in spec.vehicles if v.kind != "car"}
+            if spec.skytrain:
+                transport.add("skytrain")
+    assert len(archs) == 1 and len(climates) == 1, (loc.id, archs, climates)
+    return {"arch": archs.pop(), "climate": climates.pop(), "trees": tuple(sorted(trees)),
+            "transport": tuple(sorted(transport)), "langs": tuple(loc.city.langs or loc.country.langs)}
+
+
+POOL = candidates(CITIES[key] for key in SET_CITIES)
+
+
+@lru_cache(maxsize=1)
+def wiki_cities() -> dict[str, set[str]]:
+    """Country title -> the titles of the wiki's city articles in it (any group: New York City lives in cities/)."""
+    out: dict[str, set[str]] = defaultdict(set)
+    for article in store.load_articles():
+        if article.category == "Cities" and article.infobox.get("Country"):
+            out[article.infobox["Country"]].add(article.title)
+    return out
+
+
+@pytest.mark.parametrize("loc", HARD, ids=lambda loc: f"{loc.id}-{loc.city_key}")
+def test_every_single_cue_and_every_pair_still_fit_a_rival_with_an_article(loc):
+    shown = shown_cues(loc)
+    assert fits(shown, shared_cues(loc.city), shown), "the views show what the city's own article states"
+    rivals = country_rivals(loc.city_key, POOL)
+    # The rivals are the wiki's: each has an article in the country, and the country article lists it.
+    titles = wiki_cities()[country_title(loc.country)]
+    assert {POOL[key].name for key in rivals} <= titles
+    country_article = store.find(country_title(loc.country))
+    assert country_article is not None
+    assert all(f"[[{POOL[key].name}]]" in country_article.body for key in rivals)
+    assert combination_gaps(shown, rivals) == []
+    # So what decides is three cues or more, put together.
+    assert all(len(kinds) >= 3 for kinds in deciding_sets(shown, rivals))
+
+
+def test_the_rule_catches_a_pair_that_names_the_city():
+    berlin = shown_cues(next(loc for loc in HARD if loc.city_key == "berlin"))
+    rivals = country_rivals("berlin", POOL)
+    assert combination_gaps(berlin, rivals) == []
+    # Without Munich (the same sky and trees, trams of another colour), sky and trees alone name Berlin.
+    gaps = combination_gaps(berlin, {k: v for k, v in rivals.items() if k != "munich"})
+    assert "climate + trees alone leaves only this city" in gaps
+    # The location set alone (round 8): the trams decided Lisbon against Porto at once.
+    lisbon = shown_cues(next(loc for loc in HARD if loc.city_key == "lisbon"))
+    set_only = {k: shared_cues(CITIES[k]) for k in SET_CITIES if CITIES[k].iso == "PT" and k != "lisbon"}
+    assert "transport alone leaves only this city" in combination_gaps(lisbon, set_only)
+    # A rival that fits every cue leaves two answers: no longer hard.
+    twin = dict(shared_cues(CITIES["lisbon"]))
+    assert combination_gaps(lisbon, {**rivals, "twin": twin})[-1] == "every cue together still fits twin"
+
+
+def test_absence_is_no_cue_and_what_is_seen_must_be_listed():
+    shown = {"arch": "a", "climate": "c", "trees": ("plane",), "transport": (), "langs": ("de",)}
+    with_trams = {"arch": "a", "climate": "c", "trees": ("linden", "plane"), "transport": ("tram:blue",),
+                  "langs": ("de",)}
+    # No vehicle seen: a city with trams still fits (the street may simply have none).
+    assert fits(shown, with_trams, ("trees", "transport"))
+    # A yellow tram seen: a city whose article lists blue ones does not.
+    assert not fits({**shown, "transport": ("tram:yellow",)}, with_trams, ("transport",))
+    # The climate shows only as the sky: a clear Mediterranean sky rules out no semi-arid city, while a grey
+    # oceanic one rules out a continental city (clear blue) and a highland horizon shows its mountains.
+    assert fits({**shown, "climate": "mediterranean"}, {**shown, "climate": "semi_arid"}, ("climate",))
+    assert not fits({**shown, "climate": "oceanic"}, {**shown, "climate": "continental"}, ("climate",))
+    assert not fits({**shown, "climate": "highland"}, {**shown, "climate": "semi_arid"}, ("climate",))
+
+
+def test_rival_cities_have_no_location_and_a_real_gazetteer_record():
+    from ewa_mcp.envs.geo import gazetteer
+
+    assert not set(RIVAL_CITIES) & set(SET_CITIES)
+    for city in RIVAL_CITIES.values():
+        record = gazetteer.city(city.geonameid)
+        assert record["countrycode"] == city.iso, city.key
+        assert store.find(city.name) is not None, f"{city.name} has no wiki article"
 
 
 # ------------------------------------------------------------------ the near lane of a view across the street

@@ -202,20 +202,19 @@ def test_every_baseline_view_carries_what_its_difficulty_promises():
 def test_hard_split_is_at_least_15_percent_and_no_single_cue_decides():
     from collections import Counter
 
-    from ewa_mcp.envs.geo.hardness import shared_cues
+    from ewa_mcp.envs.geo.cue_sets import candidates, combination_gaps, country_rivals, street_cues
 
     tasks = build_tasks("baseline") + build_tasks("embodied")
     counts = Counter(t.difficulty for t in tasks)
     assert set(counts) == {"easy", "medium", "hard"} and counts["hard"] >= 0.15 * len(tasks), counts
-    cities = {loc.city_key: loc.city for loc in LOCATIONS_LIST}
+    pool = candidates(loc.city for loc in LOCATIONS_LIST)
     for loc in LOCATIONS_LIST:
         if not is_hard(loc):
             continue
-        mine = shared_cues(loc.city)
-        for name, value in mine.items():  # each cue is some other city's too ...
-            assert not value or any(shared_cues(c)[name] == value for k, c in cities.items() if k != loc.city_key)
-        rivals = [c for k, c in cities.items() if c.iso == loc.city.iso and k != loc.city_key]
-        assert rivals and all(shared_cues(c) != mine for c in rivals), loc.id  # ... together they decide
+        # Each cue, and each pair, is some rival's of the same country too; all together decide
+        # (tests/geo/test_hard_cues.py checks the same against what the views show).
+        rivals = country_rivals(loc.city_key, pool)
+        assert rivals and combination_gaps(street_cues(loc.city, loc.pedestrian), rivals) == [], loc.id
         for sp in build_graph(loc):  # and no view anywhere shows a deciding cue
             for heading in FOUR_DIRECTIONS:
                 spec = compose_view(loc, sp, heading)

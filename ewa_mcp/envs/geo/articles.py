@@ -29,6 +29,7 @@ from .cities import CITIES, City
 from .countries import COUNTRIES, Country
 from .languages import language
 from .locations import LOCATIONS_LIST, Location
+from .rival_cities import RIVAL_CITIES_LIST
 from .plates import colour_name
 from .styles import ARCH, CLIMATE, TREE_NAMES, vehicle_name
 from .vocabulary import banned_in_articles
@@ -367,13 +368,16 @@ def write_articles(out_dir: Path, articles_root: Path | None = None) -> int:
     cities_by_country: dict[str, list[City]] = defaultdict(list)
     for key in by_city:
         cities_by_country[CITIES[key].iso].append(CITIES[key])
+    # Rival cities (rival_cities.py) have an article and no location: the hard cities' look-alikes.
+    rivals = [city for city in RIVAL_CITIES_LIST if city.iso in cities_by_country]
+    for city in rivals:
+        cities_by_country[city.iso].append(city)
 
     # Titles this writer will create, to decide links and drop clashing aliases.
     planned: dict[str, str] = {}
     for iso in cities_by_country:
         planned[_key(country_title(COUNTRIES[iso]))] = country_title(COUNTRIES[iso])
-    for key in by_city:
-        title = CITIES[key].name
+    for title in [CITIES[key].name for key in by_city] + [city.name for city in rivals]:
         if _key(title) not in planned:
             planned[_key(title)] = title
     names = dict(planned)
@@ -405,7 +409,7 @@ def write_articles(out_dir: Path, articles_root: Path | None = None) -> int:
         same = [c for c in cities_by_country[iso] if _key(c.name) == _key(title)]
         banned: set[str] = set()
         for city in cities_by_country[iso]:
-            banned |= view_words(city, by_city[city.key])
+            banned |= view_words(city, by_city.get(city.key, []))
         for city in same:
             about = without_view_words(city.about, banned | banned_in_articles())
             extra += [*(["## The city", about] if about else []), *_city_sections(city, by_city[city.key])]
@@ -419,6 +423,11 @@ def write_articles(out_dir: Path, articles_root: Path | None = None) -> int:
         if _key(city.name) in taken_titles or _key(city.name) == _key(country_title(COUNTRIES[city.iso])):
             continue  # an existing article (or the country of the same name) covers it
         files[slugify(city.name)] = city_article(city, by_city[key], free_aliases(city.aliases, city.name))
+    for city in rivals:
+        if _key(city.name) in taken_titles:
+            raise ValueError(f"rival city {city.name} already has an article outside the geo group, which would "
+                             f"not state its conventions: pick another city in rival_cities.py")
+        files[slugify(city.name)] = city_article(city, [], free_aliases(city.aliases, city.name))
     for path in out_dir.glob("*.md"):
         if path.stem not in files:
             path.unlink()  # a location set that shrank leaves no stale articles behind

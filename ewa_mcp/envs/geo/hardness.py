@@ -5,10 +5,10 @@ climate (sky and trees), street trees, local transport and sign languages. Its *
 are the ones that name one city: the telephone area code, the region code or caption on
 number plates and a city-specific street-sign style.
 
-A location is hard when it is not a landmark location, its country has at least two cities in
-the location set, every one of its city's shared cues is also a cue of some other city (so no
-single one decides), and their combination differs from every other city of the same country
-(so together they pin the city down). Hard locations never show a deciding cue (scene.py):
+A location is hard when it is not a landmark location and its city's shared cues name it only three
+or more together (cue_sets.py): every single cue and every pair still fit another city of the
+country with a wiki article (the set's or a rival city, rival_cities.py), and all of them together
+fit none. Hard locations never show a deciding cue (scene.py):
 no area-coded telephone numbers, no legible regional plates, the country's street-sign style;
 the street sign is two steps from the start. Finding the city takes several cues together,
 read against the wiki's descriptions of the candidate cities.
@@ -26,7 +26,8 @@ __all__ = ["hard_city_keys", "is_hard", "shared_cues", "task_difficulty"]
 
 @lru_cache(maxsize=1)
 def _hard_cities() -> frozenset[str]:
-    return hard_city_keys(loc.city for loc in LOCATIONS_LIST)
+    return hard_city_keys((loc.city for loc in LOCATIONS_LIST),
+                          pedestrian={loc.city_key for loc in LOCATIONS_LIST if loc.pedestrian and loc.difficulty != "easy"})
 
 
 def is_hard(loc: Location) -> bool:

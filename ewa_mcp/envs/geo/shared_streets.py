@@ -120,8 +120,16 @@ def with_shared_streets(locations: Iterable[Any]) -> list[Any]:
     is one): a city's hard locations take different names (in a seeded rotation), so no two of its tasks
     share an answer."""
     locations = list(locations)
-    hard = hard_city_keys(CITIES[loc.city_key] for loc in locations)
+    hard = hard_city_keys((CITIES[loc.city_key] for loc in locations),
+                          pedestrian={loc.city_key for loc in locations if loc.pedestrian and loc.difficulty != "easy"})
     taken: dict[str, int] = defaultdict(int)
+    # Names a city's hard locations already stand on (High Street in Edinburgh, Chūō-dōri in Tokyo): the
+    # rotation skips them, so a second hard location of that city never takes the same answer.
+    kept: dict[str, set[str]] = defaultdict(set)
+    for loc in locations:
+        if loc.difficulty != "easy" and loc.city_key in hard:
+            if loc.street in {street.name for street in SHARED_STREETS.get(loc.city.iso, ())}:
+                kept[loc.city_key].add(loc.street)
     out: list[Any] = []
     for loc in locations:
         if loc.difficulty == "easy" or loc.city_key not in hard:
@@ -134,7 +142,12 @@ def with_shared_streets(locations: Iterable[Any]) -> list[Any]:
         if loc.street in {street.name for street in pool}:
             out.append(loc)  # its surveyed street already has a shared name (Avenida Juárez in Guadalajara)
             continue
-        pick = pool[(_offset(loc.city_key) + taken[loc.city_key]) % len(pool)]
+        free = [street for street in pool if street.name not in kept[loc.city_key]]
+        if not free:
+            raise ValueError(f"location {loc.id} ({loc.city_key}) is hard, but its city's other hard locations "
+                             f"use every shared street name of {loc.city.iso}: add names to SHARED_STREETS")
+        pick = free[(_offset(loc.city_key) + taken[loc.city_key]) % len(free)]
         taken[loc.city_key] += 1
+        kept[loc.city_key].add(pick.name)
         out.append(replace(loc, street=pick.name, sign=pick.sign, street_aliases=pick.aliases))
     return out
