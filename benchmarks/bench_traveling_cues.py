@@ -24,6 +24,7 @@ sys.path.insert(0, str(ROOT))
 from ewa_mcp.envs.street.taskgen.traveling import cue_value, landmarks_of  # noqa: E402
 from ewa_mcp.envs.street.world import get_world  # noqa: E402
 from ewa_mcp.websites.wiki import store as wiki  # noqa: E402
+from ewa_mcp.websites.wiki.search import SearchIndex  # noqa: E402
 
 
 def main() -> int:
@@ -69,6 +70,7 @@ def two_facts(world, pairs: list[dict], walk_m) -> None:
     (stations included: the intent names them) other than X and Y, by the walk from the corner."""
     hits: Counter = Counter()
     in_range_x, in_range_y = [], []
+    index = SearchIndex(wiki.load_articles())
     for task in pairs:
         cue, pair, start = task["metadata"]["cue"], task["metadata"]["pair_cue"], task["start"]["embodied"]["node"]
         target = world.places[task["metadata"]["poi_id"]]
@@ -84,7 +86,16 @@ def two_facts(world, pairs: list[dict], walk_m) -> None:
         hits["nearest sharing X's fact"] += nearest(shares_x) == target.id
         hits["nearest sharing Y's fact"] += nearest(shares_y) == target.id
         hits["nearest place of all"] += nearest(lambda p: True) == target.id
-        hits["nearest sharing both (range not read)"] += nearest(lambda p: shares_x(p) and shares_y(p)) == target.id
+        # not a shortcut: both facts read and combined, only the range left unread
+        hits["nearest sharing both (both facts read, the range not)"] += \
+            nearest(lambda p: shares_x(p) and shares_y(p)) == target.id
+        # what a searcher types: the shared style (or architect) and the city, reading hits in order
+        text_cue = cue if cue["key"] != "year_built" else pair
+        city = world.city(target.city).name.split(" (")[0].split(",")[0]
+        found, _, _ = index.search(f"{text_cue['value']} {city}", 20)
+        in_range = {pid for m, pid, _ in places if m <= cue["range_m"]}
+        first = next((a.poi_id for h in found if (a := wiki.find(h.slug)) is not None and a.poi_id in in_range), None)
+        hits["first in range of the wiki's search for the style (or architect) and the city"] += first == target.id
         within = [p for m, _, p in places if m <= cue["range_m"] and p.id != target.id]
         in_range_x.append(sum(1 for p in within if shares_x(p)))
         in_range_y.append(sum(1 for p in within if shares_y(p)))

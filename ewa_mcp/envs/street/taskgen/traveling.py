@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
-from typing import Any
+from typing import Any, Iterator
 
 
 from ewa_mcp.geometry import haversine_m
@@ -246,20 +246,23 @@ def concept_articles(key: str, value: str) -> list[Any]:
 def near_starts(world: Any, target: Any, rng: Any, draws: int = 60) -> list[tuple[Any, Any]]:
     """Street corners MIN_M..CUE_MAX_M on foot from the landmark, in a seeded random order (drawn among the
     corners near it as the crow flies: a draw over the whole city rarely lands in range)."""
+    return list(iter_near_starts(world, target, rng, draws))
+
+
+def iter_near_starts(world: Any, target: Any, rng: Any, draws: int = 60) -> Iterator[tuple[Any, Any]]:
+    """``near_starts`` one at a time: the shuffle is drawn first, each walk measured only when reached."""
     graph = world.city(target.city)
     end = world.node(target.node)
     ids = [i for i in sorted(graph.ids) if haversine_m(end.lat, end.lng, world.node(i).lat, world.node(i).lng)
            <= CUE_MAX_M and len(world.node(i).streets) >= 2]
     rng.shuffle(ids)
-    out = []
     for node_id in ids[:draws]:
         try:
             route = world.directions(node_id, target.node)
         except ValueError:
             continue
         if MIN_M <= route.distance_m <= CUE_MAX_M:
-            out.append((world.place(node_id), route))
-    return out
+            yield world.place(node_id), route
 
 
 def cue_task(world: Any, target: Any, rng: Any) -> tuple[str, str, Any, Any, Any, int] | None:
@@ -530,6 +533,7 @@ PAIR_SHARE = 0.5  # of the hard slots, drawn by a seeded shuffle (where the data
 PAIR_MARGIN_M = 100.0  # the place beyond the range sharing both, and any other reading as sharing both, lie
 #                        this much beyond it at least
 PAIR_CLEAR_M = 60.0  # the target and the one-fact places stand this much inside the range
+PAIR_ONLY = 1  # places within the range sharing one of the facts only, for each fact, at least
 PAIR_STARTS = 120  # corners drawn near the target: a pair's constraints leave few of them
 
 
@@ -579,28 +583,37 @@ def pair_task(world: Any, target: Any, rng: Any) -> tuple[tuple[str, str, Any], 
         only_x = [p for p in with_articles if value(kx, p) == vx and not like(ky, vy, p) and stated(kx, vx, p)]
         only_y = [p for p in with_articles if value(ky, p) == vy and not like(kx, vx, p) and stated(ky, vy, p)]
         alike_both = [p for p in with_articles if like(kx, vx, p) and like(ky, vy, p)]
-        for start, route in near_starts(world, target, rng, PAIR_STARTS):
+        for start, route in iter_near_starts(world, target, rng, PAIR_STARTS):
             limit = int(-(-(route.distance_m + PAIR_CLEAR_M) // 100) * 100)
             walks: dict[str, float] = {}
+            here = world.node(start.node)
 
-            def walk_m(p: Any) -> float:
-                if p.id not in walks:
-                    try:
-                        walks[p.id] = float(world.directions(start.node, p.node).distance_m)
-                    except ValueError:
-                        walks[p.id] = float("inf")
+            def walk_m(p: Any, within: float) -> float:
+                """The walk to ``p``, or its crow-fly distance where that alone is beyond ``within`` (a walk
+                is never shorter): only what could fall within is measured."""
+                if p.id in walks:
+                    return walks[p.id]
+                node = world.node(p.node)
+                crow = haversine_m(here.lat, here.lng, node.lat, node.lng)
+                if crow > within:
+                    return crow
+                try:
+                    walks[p.id] = float(world.directions(start.node, p.node).distance_m)
+                except ValueError:
+                    walks[p.id] = float("inf")
                 return walks[p.id]
 
+            near, inner = limit + PAIR_MARGIN_M, limit - PAIR_CLEAR_M
             for x in rng.sample(xs, len(xs)):
                 for y in rng.sample(ys, len(ys)):
                     named = {x.id, y.id}
-                    if any(p.id not in named and walk_m(p) <= limit + PAIR_MARGIN_M for p in alike_both):
+                    if any(p.id not in named and walk_m(p, near) <= near for p in alike_both):
                         continue  # another place near the range could be read as sharing both
-                    if not any(p.id not in named and walk_m(p) > limit + PAIR_MARGIN_M for p in both):
+                    if not any(p.id not in named and walk_m(p, near) > near for p in both):
                         continue
-                    if not any(p.id not in named and walk_m(p) <= limit - PAIR_CLEAR_M for p in only_x):
+                    if sum(p.id not in named and walk_m(p, inner) <= inner for p in only_x) < PAIR_ONLY:
                         continue  # the second fact alone would find it
-                    if not any(p.id not in named and walk_m(p) <= limit - PAIR_CLEAR_M for p in only_y):
+                    if sum(p.id not in named and walk_m(p, inner) <= inner for p in only_y) < PAIR_ONLY:
                         continue  # the first fact alone would find it
                     return (kx, vx, x), (ky, vy, y), start, route, limit
     return None
