@@ -1,6 +1,8 @@
 """What a single cue of a two-hop traveling hard task gives away (docs/verified.md, "Traveling hard in two hops"),
 measured on the committed tasks: how many landmarks the range holds, how often the nearest one is the answer,
-how many landmarks share the fact, how often the named landmark X stands within the range.
+how many landmarks share the fact, how often the named landmark X stands within the range; and for the
+two-fact tasks (X's fact and Y's together), how often each shortcut lands on the answer: the nearest place
+sharing X's fact, the nearest sharing Y's, the nearest place of all, and any place sharing both.
 
     .venv/bin/python benchmarks/bench_traveling_cues.py
 
@@ -22,12 +24,15 @@ sys.path.insert(0, str(ROOT))
 from ewa_mcp.envs.street.taskgen.traveling import cue_value, landmarks_of  # noqa: E402
 from ewa_mcp.envs.street.world import get_world  # noqa: E402
 from ewa_mcp.websites.wiki import store as wiki  # noqa: E402
+from ewa_mcp.websites.wiki.search import SearchIndex  # noqa: E402
 
 
 def main() -> int:
     world = get_world()
-    hard = [t for p in sorted((ROOT / "tasks" / "traveling").glob("*.json")) for t in json.loads(p.read_text("utf-8"))
-            if t["difficulty"] == "hard"]
+    every = [t for p in sorted((ROOT / "tasks" / "traveling").glob("*.json")) for t in json.loads(p.read_text("utf-8"))
+             if t["difficulty"] == "hard"]
+    hard = [t for t in every if not t["metadata"].get("pair_cue")]
+    pairs = [t for t in every if t["metadata"].get("pair_cue")]
 
     def walk_m(start: str, node: str) -> float:
         try:
@@ -47,6 +52,7 @@ def main() -> int:
         sharing.append(sum(1 for p in peers if cue_value(cue["key"], p) == cue["value"]))
         via_in_range += walk_m(start, world.places[cue["via"]].node) <= cue["range_m"]
     n = len(hard)
+    print(f"one-fact tasks (below): {n}; two-fact tasks: {len(pairs)} of {len(every)}")
     print(f"hard traveling tasks: {n}; shared fact: {dict(Counter(t['metadata']['cue']['key'] for t in hard))}")
     print(f"landmarks with an article within the range (X aside): median {statistics.median(in_range)}, "
           f"min {min(in_range)}, max {max(in_range)}")
@@ -54,7 +60,52 @@ def main() -> int:
     print(f"landmarks sharing the fact (the answer included, X aside): median {statistics.median(sharing)}, "
           f"min {min(sharing)}")
     print(f"X itself within the range: {via_in_range} of {n}")
+    if pairs:
+        two_facts(world, pairs, walk_m)
     return 0
+
+
+def two_facts(world, pairs: list[dict], walk_m) -> None:
+    """The shortcuts over the two-fact tasks: which place each picks, among the places with an article
+    (stations included: the intent names them) other than X and Y, by the walk from the corner."""
+    hits: Counter = Counter()
+    in_range_x, in_range_y = [], []
+    index = SearchIndex(wiki.load_articles())
+    for task in pairs:
+        cue, pair, start = task["metadata"]["cue"], task["metadata"]["pair_cue"], task["start"]["embodied"]["node"]
+        target = world.places[task["metadata"]["poi_id"]]
+        places = sorted((walk_m(start, p.node), p.id, p) for p in world.places.values()
+                        if p.city == target.city and p.id not in (cue["via"], pair["via"])
+                        and wiki.by_poi_id(p.id) is not None)
+
+        def nearest(keep) -> str | None:
+            return next((pid for _, pid, p in places if keep(p)), None)
+
+        shares_x = lambda p: cue_value(cue["key"], p) == cue["value"]  # noqa: E731
+        shares_y = lambda p: cue_value(pair["key"], p) == pair["value"]  # noqa: E731
+        hits["nearest sharing X's fact"] += nearest(shares_x) == target.id
+        hits["nearest sharing Y's fact"] += nearest(shares_y) == target.id
+        hits["nearest place of all"] += nearest(lambda p: True) == target.id
+        # not a shortcut: both facts read and combined, only the range left unread
+        hits["nearest sharing both (both facts read, the range not)"] += \
+            nearest(lambda p: shares_x(p) and shares_y(p)) == target.id
+        # what a searcher types: the shared style (or architect) and the city, reading hits in order
+        text_cue = cue if cue["key"] != "year_built" else pair
+        city = world.city(target.city).name.split(" (")[0].split(",")[0]
+        found, _, _ = index.search(f"{text_cue['value']} {city}", 20)
+        in_range = {pid for m, pid, _ in places if m <= cue["range_m"]}
+        first = next((a.poi_id for h in found if (a := wiki.find(h.slug)) is not None and a.poi_id in in_range), None)
+        hits["first in range of the wiki's search for the style (or architect) and the city"] += first == target.id
+        within = [p for m, _, p in places if m <= cue["range_m"] and p.id != target.id]
+        in_range_x.append(sum(1 for p in within if shares_x(p)))
+        in_range_y.append(sum(1 for p in within if shares_y(p)))
+    n = len(pairs)
+    print(f"two-fact tasks: {n}; facts (X, Y): "
+          f"{dict(Counter((t['metadata']['cue']['key'], t['metadata']['pair_cue']['key']) for t in pairs))}")
+    print(f"other places within the range sharing X's fact: min {min(in_range_x)}, median "
+          f"{statistics.median(in_range_x)}; Y's: min {min(in_range_y)}, median {statistics.median(in_range_y)}")
+    for name, hit in hits.items():
+        print(f"shortcut '{name}' is the answer: {hit} of {n} ({100 * hit / n:.0f} %)")
 
 
 if __name__ == "__main__":

@@ -49,8 +49,9 @@ def test_hard_traveling_needs_two_hops_and_the_range_together() -> None:
     from ewa_mcp.envs.street.taskgen.traveling import _alike, cue_value, landmarks_of
 
     world = get_world()
-    hard = [t for t in suite("traveling") if t["difficulty"] == "hard"]
-    assert len(hard) >= 25
+    every = [t for t in suite("traveling") if t["difficulty"] == "hard"]
+    assert len(every) == 30
+    hard = [t for t in every if not t["metadata"].get("pair_cue")]
     assert len({t["metadata"]["cue"]["key"] for t in hard}) >= 2  # more than one kind of shared fact
     for task in hard:
         place = world.places[task["metadata"]["poi_id"]]
@@ -76,6 +77,54 @@ def test_hard_traveling_needs_two_hops_and_the_range_together() -> None:
         assert not any(cue_value(cue["key"], p) and _alike(cue["key"], cue["value"], cue_value(cue["key"], p))
                        for p in near), task["id"]  # nothing in range could be read as sharing it
         assert any(walk_m(world, start, p.node) < cue["range_m"] for p in peers), task["id"]  # nor the range
+        assert walk_m(world, start, place.node) <= cue["range_m"] - 50, task["id"]
+
+
+def test_hard_traveling_two_facts_only_combine_to_the_answer() -> None:
+    """The two-fact tasks (issue 26, principle 6): the place within the range sharing X's fact and Y's. Over
+    the places with an article other than X and Y: X's fact alone leaves at least two within the range (the
+    answer and one sharing it only), Y's fact alone too, the pair leaves exactly the answer within the range
+    (nothing near it reads as sharing both), and another place sharing both stands beyond it. The slots are a
+    seeded shuffle of the ids, which are kept, and so is the count."""
+    from ewa_mcp.envs.street.taskgen.traveling import _alike, cue_value
+
+    world = get_world()
+    every = [t for t in suite("traveling") if t["difficulty"] == "hard"]
+    pairs = [t for t in every if t["metadata"].get("pair_cue")]
+    assert len(pairs) >= 10, len(pairs)
+    assert sorted(int(t["id"].rsplit("-", 1)[-1]) for t in every) == list(range(30))  # the ids' numbers kept
+    for task in every:  # and each id's city is its landmark's
+        assert task["id"].rsplit("-", 2)[-2] == world.places[task["metadata"]["poi_id"]].city, task["id"]
+    assert len({t["metadata"]["poi_id"] for t in every}) == len(every)  # each landmark answers one task at most
+    for task in pairs:
+        meta = task["metadata"]
+        cue, pair, start = meta["cue"], meta["pair_cue"], task["start"]["embodied"]["node"]
+        place, x, y = (world.places[i] for i in (meta["poi_id"], cue["via"], pair["via"]))
+        assert len({place.id, x.id, y.id}) == 3 and x.city == y.city == place.city, task["id"]
+        assert cue["key"] != pair["key"] and meta["question"] not in (cue["key"], pair["key"]), task["id"]
+        for named in (x, y):
+            title = wiki.by_poi_id(named.id).title
+            assert title in task["intent"], (task["id"], title)
+            assert named.facts.get(meta["question"]) != place.facts.get(meta["question"]), (task["id"], named.id)
+        assert not contains_phrase(task["intent"], cue["value"]) and not contains_phrase(task["intent"], pair["value"])
+        assert cue_value(cue["key"], x) == cue["value"] and cue_value(pair["key"], y) == pair["value"], task["id"]
+        assert cue_value(cue["key"], place) == cue["value"] and cue_value(pair["key"], place) == pair["value"]
+        others = [p for p in world.places.values() if p.city == place.city and p.id not in (x.id, y.id)
+                  and wiki.by_poi_id(p.id) is not None]
+        within = [p for p in others if walk_m(world, start, p.node) <= cue["range_m"]]
+        by_x = [p.id for p in within if cue_value(cue["key"], p) == cue["value"]]
+        by_y = [p.id for p in within if cue_value(pair["key"], p) == pair["value"]]
+        assert place.id in by_x and len(by_x) >= 2, (task["id"], by_x)  # X's fact alone leaves several
+        assert place.id in by_y and len(by_y) >= 2, (task["id"], by_y)  # and so does Y's
+        assert set(by_x) & set(by_y) == {place.id}, task["id"]  # the pair leaves exactly the answer
+        near = [p for p in others if p.id != place.id and walk_m(world, start, p.node) <= cue["range_m"] + 100]
+        for p in near:  # nothing near the range could be read as sharing both
+            vx, vy = cue_value(cue["key"], p), cue_value(pair["key"], p)
+            assert not (vx and vy and _alike(cue["key"], cue["value"], vx) and _alike(pair["key"], pair["value"], vy)), \
+                (task["id"], p.id)
+        beyond = [p for p in others if p.id != place.id and cue_value(cue["key"], p) == cue["value"]
+                  and cue_value(pair["key"], p) == pair["value"]]
+        assert beyond and all(walk_m(world, start, p.node) > cue["range_m"] + 100 for p in beyond), task["id"]
         assert walk_m(world, start, place.node) <= cue["range_m"] - 50, task["id"]
 
 

@@ -1,6 +1,6 @@
 """No single read answers a two-hop traveling task (issue 26, principle 6): the article of a style or an
 architect lists none or several of a city's landmarks of that style or by that architect, never one alone; a
-hard task's landmark and the landmark X it is named by do not name each other."""
+hard task's landmark and the landmarks X (and Y) it is named by do not name each other."""
 
 from __future__ import annotations
 
@@ -43,6 +43,11 @@ def test_a_hard_task_and_its_named_landmark_do_not_name_each_other() -> None:
         target, via = world.places[task["metadata"]["poi_id"]], world.places[cue["via"]]
         assert not names_place(article_text(wiki.by_poi_id(target.id)), via), task["id"]
         assert not names_place(article_text(wiki.by_poi_id(via.id)), target), task["id"]
+        pair = task["metadata"].get("pair_cue")
+        if pair:  # a two-fact task's Y, like its X, neither names the answer nor is named by it
+            y = world.places[pair["via"]]
+            assert not names_place(article_text(wiki.by_poi_id(target.id)), y), task["id"]
+            assert not names_place(article_text(wiki.by_poi_id(y.id)), target), task["id"]
         sharing = [p for p in landmarks_of(world) if p.city == target.city and p.id != via.id
                    and wiki.by_poi_id(p.id) is not None and cue_value(cue["key"], p) == cue["value"]]
         for article in concept_articles(cue["key"], cue["value"]):

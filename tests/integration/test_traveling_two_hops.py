@@ -22,11 +22,12 @@ needs_browser = pytest.mark.skipif(
 
 
 def two_hop_task() -> Task:
-    """The first hard traveling task whose shared fact is a style (the style's own article is a page a
-    searcher opens first)."""
+    """The first one-fact hard traveling task whose shared fact is a style (the style's own article is a page
+    a searcher opens first)."""
     store = TaskStore([tasks_dir()])
     return next(t for t in sorted(store.all("traveling"), key=lambda t: t.id)
-                if t.difficulty == "hard" and t.metadata["cue"]["key"] == "architectural_style")
+                if t.difficulty == "hard" and t.metadata["cue"]["key"] == "architectural_style"
+                and not t.metadata.get("pair_cue"))
 
 
 def go_to(task: Task, place) -> Task:
@@ -61,3 +62,30 @@ def test_the_landmark_sharing_xs_style_in_range_passes_x_and_one_out_of_range_fa
     assert not play(go_to(task, via), tmp_path, "the-named-landmark")
     assert not play(go_to(task, outside), tmp_path, "out-of-range")
     assert play(go_to(task, target), tmp_path, "the-plan-to-the-target")  # the altered plan itself can pass
+
+
+@needs_browser
+def test_two_facts_the_place_sharing_both_in_range_passes_one_fact_or_out_of_range_fails(tmp_path):
+    """A two-fact task: the place within the range sharing X's fact and Y's passes; the nearest place
+    within the range sharing X's fact only fails, so does the one sharing Y's only, and so does the place
+    sharing both beyond the range."""
+    store = TaskStore([tasks_dir()])
+    task = next(t for t in sorted(store.all("traveling"), key=lambda t: t.id)
+                if t.difficulty == "hard" and t.metadata.get("pair_cue"))
+    world = get_world()
+    cue, pair, start = task.metadata["cue"], task.metadata["pair_cue"], task.start.embodied.node
+    target = world.places[task.metadata["poi_id"]]
+    others = sorted((p for p in world.places.values() if p.city == target.city
+                     and p.id not in (target.id, cue["via"], pair["via"]) and wiki.by_poi_id(p.id) is not None),
+                    key=lambda p: world.directions(start, p.node).distance_m)
+    x_only = next(p for p in others if cue_value(cue["key"], p) == cue["value"])
+    y_only = next(p for p in others if cue_value(pair["key"], p) == pair["value"])
+    both = next(p for p in others if cue_value(cue["key"], p) == cue["value"]
+                and cue_value(pair["key"], p) == pair["value"])
+    for decoy in (x_only, y_only):
+        assert world.directions(start, decoy.node).distance_m <= cue["range_m"]
+    assert world.directions(start, both.node).distance_m > cue["range_m"]
+    assert play(task, tmp_path, "oracle")
+    assert not play(go_to(task, x_only), tmp_path, "x-fact-only")
+    assert not play(go_to(task, y_only), tmp_path, "y-fact-only")
+    assert not play(go_to(task, both), tmp_path, "both-out-of-range")

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
-from typing import Any
+from typing import Any, Iterator
 
 
 from ewa_mcp.geometry import haversine_m
@@ -243,23 +243,26 @@ def concept_articles(key: str, value: str) -> list[Any]:
     return list(out.values())
 
 
-def near_starts(world: Any, target: Any, rng: Any) -> list[tuple[Any, Any]]:
+def near_starts(world: Any, target: Any, rng: Any, draws: int = 60) -> list[tuple[Any, Any]]:
     """Street corners MIN_M..CUE_MAX_M on foot from the landmark, in a seeded random order (drawn among the
     corners near it as the crow flies: a draw over the whole city rarely lands in range)."""
+    return list(iter_near_starts(world, target, rng, draws))
+
+
+def iter_near_starts(world: Any, target: Any, rng: Any, draws: int = 60) -> Iterator[tuple[Any, Any]]:
+    """``near_starts`` one at a time: the shuffle is drawn first, each walk measured only when reached."""
     graph = world.city(target.city)
     end = world.node(target.node)
     ids = [i for i in sorted(graph.ids) if haversine_m(end.lat, end.lng, world.node(i).lat, world.node(i).lng)
            <= CUE_MAX_M and len(world.node(i).streets) >= 2]
     rng.shuffle(ids)
-    out = []
-    for node_id in ids[:60]:
+    for node_id in ids[:draws]:
         try:
             route = world.directions(node_id, target.node)
         except ValueError:
             continue
         if MIN_M <= route.distance_m <= CUE_MAX_M:
-            out.append((world.place(node_id), route))
-    return out
+            yield world.place(node_id), route
 
 
 def cue_task(world: Any, target: Any, rng: Any) -> tuple[str, str, Any, Any, Any, int] | None:
@@ -327,14 +330,29 @@ def cue_task(world: Any, target: Any, rng: Any) -> tuple[str, str, Any, Any, Any
 
 
 def landmark_task(world: Any, tid: str, target: Any, article: Any, question_key: str, start: Any, route: Any,
-                  trng: Any, hard: bool, cue: tuple[str, str, Any, int] | None = None) -> Task:
+                  trng: Any, hard: bool, cue: tuple[str, str, Any, int] | None = None,
+                  pair: tuple[str, str, Any] | None = None) -> Task:
     """One task: walk to the landmark, look it up, answer. A hard task with a ``cue`` (key, shared value, X,
     range) names the landmark by the fact it shares with the named landmark X plus a walking range from the
-    corner, which single it out only together; one without describes it only by its look (no address, no
-    name)."""
+    corner, which single it out only together; with a ``pair`` too (key, shared value, Y) it names the place
+    sharing X's fact and Y's together within the range (``pair_task``); one without describes it only by its
+    look (no address, no name)."""
     question, answer = QUESTIONS[question_key][0], QUESTIONS[question_key][1](target.facts[question_key])
     corner = corner_phrase(start.name)
-    if cue is not None:
+    if cue is not None and pair is not None:
+        key, value, via, limit = cue
+        city = world.city(target.city).name.split(" (")[0]
+        x, y = article_of(via).title, article_of(pair[2]).title
+        intent = (f"You are at the corner of {corner} in {city}. Of the places with a wiki article (buildings, "
+                  f"parks, squares, stations) within about {limit} m of this corner on foot, exactly one other "
+                  f"than {x} and {y} {CUES[key].format(x=x)} and {CUES[pair[0]].format(x=y)}, as their wiki "
+                  f"articles give {CUE_LABEL[key]} and {CUE_LABEL[pair[0]]}. Other places within that range "
+                  "share only one of the two facts, and farther away another place shares both: only the two "
+                  f"facts and the range together single it out. Find it: the wiki articles of {x} and {y} give "
+                  "the facts, the wiki's articles give each place's address, and the map measures walks. "
+                  f"{WALK_RULE} When you are there, look it up on the wiki and answer: {question} "
+                  + answer_rule(FORMS[question_key]))
+    elif cue is not None:
         key, value, via, limit = cue
         city = world.city(target.city).name.split(" (")[0]
         x = article_of(via).title
@@ -360,6 +378,7 @@ def landmark_task(world: Any, tid: str, target: Any, article: Any, question_key:
     end = world.node(target.node)
     oracle = [
         *([call("browser_goto", url=site_url("wiki", f"/wiki/{article_of(cue[2]).slug}"))] if cue else []),
+        *([call("browser_goto", url=site_url("wiki", f"/wiki/{article_of(pair[2]).slug}"))] if pair else []),
         call("browser_goto", url=site_url("map", "/directions", **{"from": start.id, "to": target.id})),
         call("switch_environment", target="embodied", message="walk to the landmark"),
         *[call("street_move", neighbour=n) for n in route.nodes[1:]], call("street_stop"),
@@ -386,7 +405,9 @@ def landmark_task(world: Any, tid: str, target: Any, article: Any, question_key:
                   "shortest_path_m": route.distance_m, "start_lat": world.node(start.node).lat,
                   "start_lng": world.node(start.node).lng, "visual_only": hard and cue is None,
                   "cue": {"key": cue[0], "value": cue[1], "via": cue[2].id, "via_article": article_of(cue[2]).slug,
-                          "range_m": cue[3]} if cue else None},
+                          "range_m": cue[3]} if cue else None,
+                  **({"pair_cue": {"key": pair[0], "value": pair[1], "via": pair[2].id,
+                                   "via_article": article_of(pair[2]).slug}} if pair else {})},
     )
 
 
@@ -461,4 +482,138 @@ def hard_tasks(world: Any) -> list[Task]:
         tasks.append(landmark_task(world, f"traveling-hard-{target.city}-{len(tasks):03d}", target, article,
                                    trng.choice(questions), start, route, trng, hard=True,
                                    cue=(key, value, via, limit)))
-    return tasks
+    return with_pairs(world, tasks, landmarks)
+
+
+def with_pairs(world: Any, tasks: list[Task], landmarks: list[Any]) -> list[Task]:
+    """The hard tasks with about PAIR_SHARE of their slots, drawn by a seeded shuffle, made two-fact tasks
+    (``pair_task``) about a landmark of the slot's city: ids and the count are kept. A slot whose city has no
+    unused landmark with such a pair stays as it was (the pairs need a city dense in shared decades and styles)."""
+    slots = list(range(len(tasks)))
+    rng_for("traveling", "hard", "pairs").shuffle(slots)
+    want = round(PAIR_SHARE * len(tasks))
+    singles = {t.metadata["poi_id"]: i for i, t in enumerate(tasks)}
+    found: dict[str, Any] = {}
+    out, used, made = list(tasks), set(), 0
+    for i in slots:
+        if made >= want:
+            break
+        city = tasks[i].id.rsplit("-", 2)[-2]
+        for target in landmarks:
+            if target.city != city or target.id in used or singles.get(target.id, i) != i:
+                continue  # each landmark is the answer of one hard task at most
+            article = wiki.by_poi_id(target.id)
+            if article is None:
+                continue
+            if target.id not in found:
+                found[target.id] = pair_task(world, target, rng_for("traveling", "hard", "pair", target.id))
+            pair = found[target.id]
+            if pair is None:
+                continue
+            (kx, vx, x), (ky, vy, y), start, route, limit = pair
+            # the answer is a third fact, one neither X's nor Y's article gives the same way
+            questions = [k for k in answerable_questions(target, article) if k not in (kx, ky)
+                         and x.facts.get(k) != target.facts.get(k) and y.facts.get(k) != target.facts.get(k)]
+            if not questions:
+                continue
+            trng = rng_for("traveling", "hard", "pair", target.id, "task")
+            out[i] = landmark_task(world, tasks[i].id, target, article, trng.choice(questions), start, route, trng,
+                                   hard=True, cue=(kx, vx, x, limit), pair=(ky, vy, y))
+            used.add(target.id)
+            made += 1
+            break
+    return out
+
+
+# Hard tasks that only combine (issue 26, principle 6): two named landmarks X and Y, the place within the range
+# that shares one fact with X (its decade, say) AND another with Y (its style). Within the range other places
+# share X's fact only and Y's fact only, so neither fact alone (nor the nearest place sharing it) finds the
+# answer; farther away another place shares both, so the pair without the range does not either.
+PAIR_SHARE = 0.5  # of the hard slots, drawn by a seeded shuffle (where the data has such a pair)
+PAIR_MARGIN_M = 100.0  # the place beyond the range sharing both, and any other reading as sharing both, lie
+#                        this much beyond it at least
+PAIR_CLEAR_M = 60.0  # the target and the one-fact places stand this much inside the range
+PAIR_ONLY = 1  # places within the range sharing one of the facts only, for each fact, at least
+PAIR_STARTS = 120  # corners drawn near the target: a pair's constraints leave few of them
+
+
+def pair_task(world: Any, target: Any, rng: Any) -> tuple[tuple[str, str, Any], tuple[str, str, Any], Any, Any, int] | None:
+    """((key, value, X), (key, value, Y), start, route, range in m) for a two-fact hard task about ``target``,
+    or None. X shares the first fact with the target and not the second, Y the second and not the first; X
+    and Y are landmarks other than the target and each other and do not name it nor it them. From the corner,
+    within the range: the target, at least one place sharing the first fact only and one sharing the second
+    only (each exactly, the other fact unlike); no place other than X and Y that could be read as sharing both
+    stands within the range or PAIR_MARGIN_M beyond it; at least one place sharing both stands farther."""
+    peers = [p for p in landmarks_of(world) if p.city == target.city and p.id != target.id
+             and wiki.by_poi_id(p.id) is not None]
+    with_articles = sorted((p for p in world.places.values() if p.city == target.city and p.id != target.id
+                            and wiki.by_poi_id(p.id) is not None), key=lambda p: p.id)
+    target_text = article_text(wiki.by_poi_id(target.id))
+    keys = [k for k in CUES if cue_value(k, target) is not None
+            and not (k == "architect" and answer_check(k, cue_value(k, target) or "") is None)]
+    pairs = [(a, b) for a in keys for b in keys if a != b]
+    rng.shuffle(pairs)
+
+    def value(key: str, p: Any) -> str | None:
+        return cue_value(key, p)
+
+    def like(key: str, v: str, p: Any) -> bool:
+        w = value(key, p)
+        return w is not None and _alike(key, v, w)
+
+    def stated(key: str, v: str, p: Any) -> bool:
+        return key == "year_built" or contains_phrase(article_text(wiki.by_poi_id(p.id)), v)
+
+    def apart(p: Any) -> bool:
+        return (not names_place(target_text, p) and not names_place(article_text(wiki.by_poi_id(p.id)), target)
+                and not names_place(article_of(p).title, target))
+
+    for kx, ky in pairs:
+        vx, vy = value(kx, target), value(ky, target)
+        if vx is None or vy is None or not stated(kx, vx, target) or not stated(ky, vy, target):
+            continue
+        both = [p for p in with_articles if value(kx, p) == vx and value(ky, p) == vy and stated(kx, vx, p)
+                and stated(ky, vy, p)]
+        if not both:
+            continue
+        xs = [p for p in peers if value(kx, p) == vx and not like(ky, vy, p) and stated(kx, vx, p) and apart(p)]
+        ys = [p for p in peers if value(ky, p) == vy and not like(kx, vx, p) and stated(ky, vy, p) and apart(p)]
+        if not xs or not ys:
+            continue
+        only_x = [p for p in with_articles if value(kx, p) == vx and not like(ky, vy, p) and stated(kx, vx, p)]
+        only_y = [p for p in with_articles if value(ky, p) == vy and not like(kx, vx, p) and stated(ky, vy, p)]
+        alike_both = [p for p in with_articles if like(kx, vx, p) and like(ky, vy, p)]
+        for start, route in iter_near_starts(world, target, rng, PAIR_STARTS):
+            limit = int(-(-(route.distance_m + PAIR_CLEAR_M) // 100) * 100)
+            walks: dict[str, float] = {}
+            here = world.node(start.node)
+
+            def walk_m(p: Any, within: float) -> float:
+                """The walk to ``p``, or its crow-fly distance where that alone is beyond ``within`` (a walk
+                is never shorter): only what could fall within is measured."""
+                if p.id in walks:
+                    return walks[p.id]
+                node = world.node(p.node)
+                crow = haversine_m(here.lat, here.lng, node.lat, node.lng)
+                if crow > within:
+                    return crow
+                try:
+                    walks[p.id] = float(world.directions(start.node, p.node).distance_m)
+                except ValueError:
+                    walks[p.id] = float("inf")
+                return walks[p.id]
+
+            near, inner = limit + PAIR_MARGIN_M, limit - PAIR_CLEAR_M
+            for x in rng.sample(xs, len(xs)):
+                for y in rng.sample(ys, len(ys)):
+                    named = {x.id, y.id}
+                    if any(p.id not in named and walk_m(p, near) <= near for p in alike_both):
+                        continue  # another place near the range could be read as sharing both
+                    if not any(p.id not in named and walk_m(p, near) > near for p in both):
+                        continue
+                    if sum(p.id not in named and walk_m(p, inner) <= inner for p in only_x) < PAIR_ONLY:
+                        continue  # the second fact alone would find it
+                    if sum(p.id not in named and walk_m(p, inner) <= inner for p in only_y) < PAIR_ONLY:
+                        continue  # the first fact alone would find it
+                    return (kx, vx, x), (ky, vy, y), start, route, limit
+    return None
