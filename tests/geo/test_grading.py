@@ -90,7 +90,15 @@ def test_street_matching_uses_local_script_aliases_and_type_words():
     assert grade_geolocation(rio, submit(rio, street="Av. Atlantica"))["street"]
     assert streets_match("Friedrichstrasse", "Friedrichstraße")
     assert streets_match("Rue de Rivoli", "Rivoli Street")
-    assert streets_match("SW 8th St", "Southwest 8 Street") is False  # "southwest" is not a type word
+    # Compass qualifiers: abbreviated or spelled out, the same; added to a street named without one, still
+    # the street; where the truth carries one, another one is another street.
+    assert streets_match("SW 8th St", "Southwest 8 Street")
+    assert streets_match("Constitution Ave NW", "Constitution Avenue")
+    assert streets_match("N Michigan Av", "Michigan Avenue")
+    assert not streets_match("NW 8th St", "Southwest 8th Street")
+    assert not streets_match("N 11th St", "South 11th Street")
+    assert not streets_match("South Street", "Main Street")
+    assert streets_match("Rua Dom Pedro e Silva", "Rua Dom Pedro e Silva")
     assert streets_match("Pike St.", "Pike Street")
     assert street_core("Rue Sainte-Catherine") == street_core("St. Catherine Street") == ("saint", "catherine")
     assert not streets_match("Street", "Main Street")  # an empty core never matches a real name
@@ -203,3 +211,15 @@ def test_only_baseline_views_without_a_street_sign_leave_the_street_out():
             else:
                 assert graded == ["continent", "country", "city"], task["id"]
     assert seen == {"baseline": 185, "embodied": 185}
+
+
+def test_every_street_sign_copied_as_it_stands_names_its_street():
+    """An agent that copies the street sign it reads must pass the street level at every location."""
+    from ewa_mcp.envs.geo.locations import locations_by_coordinates
+
+    wrong = []
+    for loc in locations_by_coordinates().values():
+        truth = GeoAnswer(lat=loc.lat, lng=loc.lng, continent="x", country="x", city="x", street=loc.street)
+        if not any(grade_geolocation(truth, submit(truth, street=line))["street"] for line in loc.sign):
+            wrong.append((loc.id, loc.street, loc.sign))
+    assert not wrong

@@ -30,10 +30,12 @@ from ewa_mcp.geometry import haversine_km
 from ewa_mcp.envs.geo.locations import locations_by_coordinates
 from ewa_mcp.envs.geo.names import (
     AMBIGUOUS_CONTINENTS,
+    COMPASS_WORDS,
     cities_match,
     countries_match,
     resolve_continent,
     resolve_country,
+    street_core,
     streets_match,
 )
 from ewa_mcp.envs.geo.goals import GeoAnswer
@@ -84,7 +86,11 @@ def _street_aliases(truth: GeoAnswer) -> tuple[str, ...]:
     # Local-script sign lines are the street's own name (Невский проспект); Latin sign lines
     # may be a district or postcode ("11e Arrt", "Copacabana"), so only aliases cover those.
     native = tuple(line for line in loc.sign if script_of(line) != "latin")
-    return (*loc.street_aliases, *native)
+    # A Latin line that shares a name word with the street is the street's own sign, abbreviated as signs
+    # are ("JL. JEND. SUDIRMAN"): the agent may copy it as it stands.
+    words = set(street_core(loc.street)) - COMPASS_WORDS
+    signed = tuple(line for line in loc.sign if script_of(line) == "latin" and words & set(street_core(line)))
+    return (*loc.street_aliases, *native, *signed)
 
 
 def grade_geolocation(answer_check: GeoAnswer | dict[str, Any], submission: dict[str, Any] | None) -> dict[str, Any]:

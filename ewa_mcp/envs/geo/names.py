@@ -223,10 +223,20 @@ _STOPWORDS = frozenset("de del la las los le les du des da do dos das di dei deg
 _ORDINAL = re.compile(r"^(\d+)(st|nd|rd|th|e|er|a|o|ª|º)$")
 
 
+# Compass qualifiers, spelled out. A single letter is one only at either end ("E 42nd St", "Constitution
+# Ave NW"); inside a name it is a word ("Rua Dom Pedro e Silva").
+_COMPASS = {"n": "north", "s": "south", "e": "east", "w": "west", "ne": "northeast", "nw": "northwest",
+            "se": "southeast", "sw": "southwest"}
+COMPASS_WORDS = frozenset(_COMPASS.values())
+
+
 def street_core(text: str) -> tuple[str, ...]:
     tokens = normalize(text).split()
     out: list[str] = []
     for i, tok in enumerate(tokens):
+        if tok in _COMPASS and (i == 0 or i == len(tokens) - 1) and len(tokens) > 1:
+            out.append(_COMPASS[tok])
+            continue
         m = _ORDINAL.match(tok)
         if m:
             tok = m.group(1)
@@ -247,4 +257,10 @@ def streets_match(answer: str, truth: str, aliases: Iterable[str] = ()) -> bool:
     if squash(answer) in {squash(c) for c in candidates}:
         return True
     core = street_core(answer)
-    return bool(core) and any(core == street_core(c) for c in candidates if street_core(c))
+    cores = [c for c in map(street_core, candidates) if c]
+    if core and core in cores:
+        return True
+    # A compass qualifier the answer adds to a street named without one is part of the same street's name
+    # ("Constitution Ave NW" for Constitution Avenue); where the truth has one, it must agree.
+    bare = tuple(t for t in core if t not in COMPASS_WORDS)
+    return bool(bare) and any(bare == c for c in cores if not COMPASS_WORDS & set(c))
