@@ -77,3 +77,35 @@ def test_the_swap_fails_on_the_vessels(two: list) -> None:
     food = meta["shared_food"]
     assert any(d.startswith(f"{food} in {meta['raw_vessel']}") for d in failed)
     assert any(d.startswith(f"{food} in {meta['cooked_vessel']}") for d in failed)
+
+
+def _piece(n: int, parent: str, cooked: bool) -> dict:
+    return {"objectId": f"Bread|+{n}.00|+0.90|-1.00|BreadSliced_{n}", "objectType": "BreadSliced",
+            "sourceType": "Bread", "parentReceptacles": [parent], "isCooked": cooked, "isSliced": False}
+
+
+def test_a_vessel_holding_the_shared_food_both_ways_passes_for_neither_dish() -> None:
+    from ewa_mcp.core.taskmodel import DomainGoal
+    from ewa_mcp.envs.kitchen import checks
+
+    plate = {"objectId": "Plate|+1.00|+0.90|-1.00", "objectType": "Plate", "parentReceptacles": []}
+    raw_dish = DomainGoal(kind="holds_only", receptacle_type="Plate", allowed=["Bread"], cooked={"Bread": False})
+    alone = checks.check_holds_only(raw_dish, [plate, _piece(1, plate["objectId"], False)])
+    assert alone.met is True
+    both = checks.check_holds_only(raw_dish, [plate, _piece(1, plate["objectId"], False),
+                                              _piece(2, plate["objectId"], True)])
+    assert both.met is False and both.detail["wrong_state"] == ["Bread"] and "both ways" in (both.note or "")
+    # without the map the goal is the one-dish holds_only, which does not look at the state
+    plain = DomainGoal(kind="holds_only", receptacle_type="Plate", allowed=["Bread"])
+    assert checks.check_holds_only(plain, [plate, _piece(1, plate["objectId"], False),
+                                           _piece(2, plate["objectId"], True)]).met is True
+    bad = DomainGoal(kind="holds_only", receptacle_type="Plate", allowed=["Bread"], cooked={"Bread": "yes"})
+    assert checks.check_holds_only(bad, [plate]).met is None
+
+
+def test_each_vessel_says_how_the_shared_food_is_there(two: list) -> None:
+    for task in two:
+        meta = task.metadata
+        food = meta["shared_food"]
+        held = {g.receptacle_type: getattr(g, "cooked", None) for g in task.embodied_goals if g.kind == "holds_only"}
+        assert held[meta["raw_vessel"]] == {food: False} and held[meta["cooked_vessel"]] == {food: True}, task.id

@@ -18,7 +18,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from ewa_mcp.core.taskmodel import StartState, Task
+from ewa_mcp.core.taskmodel import DomainGoal, StartState, Task
 from ewa_mcp.envs.browser.goals import OrderPlaced, RecipesCompleted, WebStart
 from ewa_mcp.envs.kitchen.goals import KitchenStart, ObjectIn, ObjectState
 from ewa_mcp.taskgen.common import call, rng_for, step_budget
@@ -28,7 +28,7 @@ from ewa_mcp.websites.recipes.vocabulary import KITCHEN_PRODUCTS
 from ..planner import PlanError, _parse_ops, _Planner, scene_inventory
 from . import cooking
 from .cooking import (KITCHEN_SCOPE, SCENES, buy_oracle, constraints_for, delivery_store, food_treatments,
-                      hard_ask, look_alikes, missing_equipment, needed_foods, recipe_web_oracle, step_web_oracle)
+                      hard_ask, kitchen_steps, look_alikes, missing_equipment, needed_foods, recipe_web_oracle, step_web_oracle)
 from .outcomes import everything_outcome, grade_kitchen
 from .recipe_goals import PIECE_SOURCE, goals_from_ops, recipe_ops, rival_foods
 
@@ -144,6 +144,10 @@ def two_dish_goals(raw: dict[str, Any], cooked: dict[str, Any], food: str, scene
                 continue  # the other dish cooks its pieces: raw holds per vessel (below)
             if isinstance(goal, ObjectIn) and goal.object_type == food:
                 goal = goal.model_copy(update={"with_state": {**goal.with_state, "isCooked": not keep_raw}})
+            if isinstance(goal, DomainGoal) and goal.kind == "holds_only" and food in (getattr(goal, "allowed", None) or []):
+                # every piece of the shared food in this dish as the dish has it: one vessel holding it both
+                # ways passes for neither dish
+                goal = DomainGoal.model_validate({**goal.model_dump(), "cooked": {food: not keep_raw}})
             if goal not in goals:
                 goals.append(goal)
     return goals
@@ -224,6 +228,8 @@ def make_two_dish_task(task_id: str, raw: dict[str, Any], cooked: dict[str, Any]
                   "second_recipe_id": cooked["id"], "second_recipe_name": cooked["name"],
                   "shared_food": food, "raw_vessel": vessel(raw), "cooked_vessel": vessel(cooked),
                   "scene": scene, "buy": buy,
+                  **{f"{key}_steps": steps for key, steps in kitchen_steps(raw).items()},
+                  **{f"second_{key}_steps": steps for key, steps in kitchen_steps(cooked).items()},
                   "asks": [{"recipe_id": d["id"], "constraint": a[0] or None, "filters": a[1], "telling_step": a[2]}
                            for d, a in (first, second)]},
     )
