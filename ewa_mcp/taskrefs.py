@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import Any
 
 from .core.taskmodel import Task
-from .envs.browser.goals import DirectionsShown, OrderPlaced, PageVisited, RecipeCompleted
+from .envs.browser.goals import DirectionsShown, OrderPlaced, PageVisited, RecipeCompleted, RecipesCompleted
 from .envs.geo.goals import GeoStart
 from .envs.kitchen.goals import KitchenStart
 from .envs.street.goals import StreetStart, _StreetTarget
@@ -137,6 +137,10 @@ class ReferenceChecker:
             where = f"web_goals.{i}"
             if isinstance(goal, RecipeCompleted) and goal.recipe_id not in self._recipes:
                 add(f"{where}.recipe_id", f"unknown recipe {goal.recipe_id!r}; the recipes are {_some(self._recipes)}")
+            elif isinstance(goal, RecipesCompleted):
+                for rid in goal.recipe_ids:
+                    if rid not in self._recipes:
+                        add(f"{where}.recipe_ids", f"unknown recipe {rid!r}; the recipes are {_some(self._recipes)}")
             elif isinstance(goal, OrderPlaced):
                 if goal.product_id not in self._products:
                     add(f"{where}.product_id", f"unknown product {goal.product_id!r}; the shop sells "

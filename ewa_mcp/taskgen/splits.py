@@ -45,7 +45,8 @@ def _navigation_key(task: Task) -> tuple[Any, ...]:
 def _cooking_key(task: Task) -> tuple[Any, ...]:
     buy = task.metadata.get("buy")
     missing = tuple(sorted([buy] if isinstance(buy, str) else buy or []))
-    return ("cooking", task.metadata.get("scene"), task.metadata.get("recipe_id"), missing)
+    second = task.metadata.get("second_recipe_id")  # the two-dish form of cooking hard: both recipes
+    return ("cooking", task.metadata.get("scene"), task.metadata.get("recipe_id"), missing, *([second] if second else []))
 
 
 # What makes two tasks the same instance, per domain that has fresh splits.

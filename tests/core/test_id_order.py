@@ -42,6 +42,9 @@ def answer_keys(task: dict[str, Any]) -> dict[str, Any]:
                          f"size{i}": goal.get("size")})
         elif goal["kind"] == "recipe_completed":
             keys["recipe"] = goal["recipe_id"]
+        elif goal["kind"] == "recipes_completed":  # two dishes: the pair, and the form itself
+            keys["recipe"] = tuple(sorted(goal["recipe_ids"]))
+            keys["form"] = "two_dishes"
         elif goal["kind"] == "page_visited":
             keys["page"] = goal["path_prefix"]
         elif goal["kind"] == "directions_shown":

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from ewa_mcp.envs.browser.goals import DirectionsShown, OrderPlaced, PageVisited, RecipeCompleted
+from ewa_mcp.envs.browser.goals import DirectionsShown, OrderPlaced, PageVisited, RecipeCompleted, RecipesCompleted
 
 from ewa_mcp.graders.models import CheckContext, ConditionResult
 
@@ -123,6 +123,38 @@ def check_recipe(goal: RecipeCompleted, events: list[dict[str, Any]]) -> Conditi
                            met=chosen == goal.recipe_id, detail=detail, note=note)
 
 
+def check_recipes(goal: RecipesCompleted, events: list[dict[str, Any]]) -> ConditionResult:
+    """Two dishes, two choices: the recipes the episode chose are the goal's, the last ``len(recipe_ids)``
+    distinct recipes it followed to their last step (check_recipe's rule for one). Reading look-alikes to
+    the end first is comparing; finishing a look-alike after the goal's recipes changes a choice."""
+    finished: list[str] = []
+    for e in events:
+        if e.get("site") != "recipes" or e.get("type") != "recipe_step":
+            continue
+        step, of = _as_int(e.get("step")), _as_int(e.get("of"))
+        if step is not None and of is not None and of >= 1 and step == of:
+            finished.append(str(e.get("recipe_id")))
+    wanted = list(dict.fromkeys(goal.recipe_ids))
+    chosen: list[str] = []
+    for rid in reversed(finished):
+        if len(chosen) == len(wanted):
+            break
+        if rid not in chosen:
+            chosen.append(rid)
+    chosen.reverse()
+    met = bool(wanted) and sorted(chosen) == sorted(wanted)
+    detail: dict[str, Any] = {"recipe_ids": wanted, "chosen_recipes": chosen,
+                              "finished": sorted(set(finished))}
+    note = None
+    if not met:
+        absent = [rid for rid in wanted if rid not in finished]
+        note = (f"not followed to the last step: {', '.join(absent)}" if absent else
+                f"the last {len(wanted)} recipes followed to their end are {', '.join(chosen)}: another recipe "
+                "was finished after the chosen ones")
+    return ConditionResult(side="web", kind=goal.kind, description=_describe(goal), met=met, detail=detail,
+                           note=note)
+
+
 def check_order(goal: OrderPlaced, events: list[dict[str, Any]],
                 task_goals: list[Any] | None = None) -> ConditionResult:
     """Some order holds the goal's item exactly, and the episode ordered nothing the task's order goals
@@ -169,6 +201,8 @@ def check_page(goal: PageVisited, events: list[dict[str, Any]]) -> ConditionResu
 def check_web_goal(goal: Any, events: list[dict[str, Any]], task_goals: list[Any] | None = None) -> ConditionResult:
     if isinstance(goal, RecipeCompleted):
         return check_recipe(goal, events)
+    if isinstance(goal, RecipesCompleted):
+        return check_recipes(goal, events)
     if isinstance(goal, OrderPlaced):
         return check_order(goal, events, task_goals)
     if isinstance(goal, DirectionsShown):
@@ -181,6 +215,8 @@ def check_web_goal(goal: Any, events: list[dict[str, Any]], task_goals: list[Any
 def _describe(goal: Any) -> str:
     if isinstance(goal, RecipeCompleted):
         return f"recipe {goal.recipe_id} shown to its last step"
+    if isinstance(goal, RecipesCompleted):
+        return f"recipes {' and '.join(goal.recipe_ids)} shown to their last steps"
     if isinstance(goal, OrderPlaced):
         parts = [f"{goal.quantity} × {goal.product_id}"]
         if goal.size:

@@ -22,6 +22,13 @@ class RecipeCompleted(StrictModel):
     recipe_id: str
 
 
+class RecipesCompleted(StrictModel):
+    """Web: the recipes the episode chose (the last ones it followed to their last step) are exactly these."""
+
+    kind: Literal["recipes_completed"] = "recipes_completed"
+    recipe_ids: list[str]
+
+
 class OrderPlaced(StrictModel):
     """Web: an order exists with this product (and size, quantity, pickup store when given)."""
 

@@ -203,23 +203,41 @@ def check_holds_only(goal: Any, objects: list[Obj]) -> ConditionResult:
         for p in parents:
             if p not in ancestors and by_id.get(p, {}).get("objectType", type_of_id(p)) == receptacle:
                 contents.setdefault(p, []).append(o)
+    # Optional (two dishes of one food): every piece of these foods in the dish is cooked (True) or raw (False),
+    # so one vessel holding the food both ways does not pass for either dish.
+    cooked_as = _field(goal, "cooked")
+    if cooked_as is not None and (not isinstance(cooked_as, dict)
+                                  or not all(isinstance(v, bool) for v in cooked_as.values())):
+        return ConditionResult(side="embodied", kind=kind, description="holds_only (malformed)", met=None,
+                               note="holds_only's cooked is a map of food type to true (cooked) or false (raw)")
+    if cooked_as:
+        description += " (" + ", ".join(f"{f} {'cooked' if v else 'raw'}" for f, v in sorted(cooked_as.items())) + ")"
     extra: set[str] = set()
+    wrong: set[str] = set()
     dish = 0
     for held in contents.values():
         sources = {_source(o) for o in held}
         if sources & set(allowed):
             dish += 1
             extra |= sources - set(allowed)
+            states: dict[str, bool] = cooked_as or {}
+            wrong |= {_source(o) for o in held if _source(o) in states
+                      and (o.get("isCooked") is True) != states[_source(o)]}
         else:
             extra |= {_source(o) for o in held if is_piece(o) or o.get("isCooked") is True or o.get("isSliced") is True}
-    met = dish > 0 and not extra
+    met = dish > 0 and not extra and not wrong
     note = None
     if extra:
         note = f"{receptacle} also holds {', '.join(sorted(extra))}, which the recipe does not put there"
+    elif wrong:
+        note = (f"{receptacle} holds {', '.join(sorted(wrong))} both ways or the other way: every piece there "
+                "must be as this dish has it")
     elif not dish:
         note = f"no {receptacle} holds {' or '.join(allowed)}"
-    return ConditionResult(side="embodied", kind=kind, description=description, met=met,
-                           detail={"receptacles": len(contents), "extra": sorted(extra)}, note=note)
+    detail: dict[str, Any] = {"receptacles": len(contents), "extra": sorted(extra)}
+    if cooked_as:
+        detail["wrong_state"] = sorted(wrong)
+    return ConditionResult(side="embodied", kind=kind, description=description, met=met, detail=detail, note=note)
 
 
 def _on_objects(check: Callable[[Any, list[Obj]], ConditionResult]) -> Callable[[Any, CheckContext], ConditionResult]:

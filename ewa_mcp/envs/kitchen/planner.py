@@ -120,6 +120,8 @@ class _Planner:
         self.chosen: dict[str, str] = {}  # receptacle type -> objectId the plan keeps using (one bowl, one pan)
         self.served: set[str] = set()  # what the plan itself put on a Plate or in a Bowl
         self.dish_foods: dict[str, set[str]] = {}  # dish type -> the food types the ops put there
+        # Two dishes of one food (taskgen/two_dishes.py): a piece already served raw is not the one to cook.
+        self.keep_served = False
         items = [{"kitchen_type": t, "quantity": 1, "product_id": f"plan-{t}"} for t in delivered_types]
         if items:
             self.session.receive_deliveries([{"site": "shop", "type": "order_placed",
@@ -247,7 +249,9 @@ class _Planner:
             how = f"; slice the {source} first" if object_type in PIECE_OF and self.of_type(source) else ""
             raise PlanError(f"{self.scene} has no {object_type}{how}")
         # pieces stand for a sliced food; cooked ones first when the recipe served them cooked
-        found.sort(key=lambda o: (not (prefer_cooked and o["isCooked"]), o["objectType"] not in PIECE_OF))
+        # and, for two dishes of one food, a piece not yet served (the first dish keeps what it was given)
+        found.sort(key=lambda o: (self.keep_served and o["objectId"] in self.served,
+                                  not (prefer_cooked and o["isCooked"]), o["objectType"] not in PIECE_OF))
         return found[0]
 
     def knob_for(self, burner_id: str) -> str:
@@ -283,7 +287,8 @@ class _Planner:
         if op.method == "toaster" and op.object == "Bread":
             raise PlanError("a toaster takes BreadSliced: slice the Bread before toasting it")
         item = self.ingredient(op.object, prefer_cooked=False)
-        uncooked = [o for o in self.of_type(*_family(op.object)) if not o["isCooked"]]
+        uncooked = [o for o in self.of_type(*_family(op.object)) if not o["isCooked"]
+                    and not (self.keep_served and o["objectId"] in self.served)]
         if op.method == "any" and any(o["isCooked"] for o in self.of_type(*_family(op.object))):
             return
         if uncooked:

@@ -681,6 +681,20 @@ def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str
     )
 
 
+def hard_ask(recipe: dict[str, Any], catalog: Any) -> tuple[list[tuple[str, dict[str, Any]]], str | None]:
+    """How a hard task asks for the recipe: (constraint pairs with their filters, the telling step or None);
+    no pairs when the recipe has no hard form."""
+    step = telling_step(recipe, catalog)
+    pairs = two_constraints(recipe, catalog)
+    if step is None:
+        pairs = word_pairs(recipe, catalog) or pairs
+    asked = asked_telling_step(recipe["id"]) if catalog is load_catalog() else None
+    if asked is not None and (step is not None or not pairs or "q" not in pairs[0][1]):
+        search, step = asked
+        pairs = [("", search)] if pairs else []
+    return pairs, step
+
+
 def generate() -> list[Task]:
     catalog = load_catalog()
     inventories = {s: scene_inventory(s) for s in SCENES}
@@ -703,14 +717,7 @@ def generate() -> list[Task]:
         # the recipes of a word of its name where one serves (several to choose from, not a pair).
         # Among the recipes of a word of its name (else of an ingredient), where a step singles it out there,
         # rather than between the two of its name (a coin toss for an agent that opens the first listed).
-        step = telling_step(recipe, catalog)
-        pairs = two_constraints(recipe, catalog)
-        if step is None:
-            pairs = word_pairs(recipe, catalog) or pairs
-        asked = asked_telling_step(recipe["id"]) if catalog is load_catalog() else None
-        if asked is not None and (step is not None or not pairs or "q" not in pairs[0][1]):
-            search, step = asked
-            pairs = [("", search)] if pairs else []
+        pairs, step = hard_ask(recipe, catalog)
         if pairs and len(foods) >= 2:
             for scene in scenes:
                 if hard >= HARD_PER_RECIPE:

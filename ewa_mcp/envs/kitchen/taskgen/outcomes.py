@@ -119,6 +119,8 @@ def audit(tasks: list[Any], fresh_goals: bool = False) -> dict[str, Any]:
               "everything_passes": []}
     for task in tasks:
         meta = task.metadata
+        if meta.get("form") == "two_dishes":
+            continue  # audited by two_dishes.audit (two dishes, the swap)
         recipe = by_id[meta["recipe_id"]]
         buy = meta.get("buy") or []
         delivered = [buy] if isinstance(buy, str) else list(buy)
