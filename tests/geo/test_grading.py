@@ -189,15 +189,17 @@ def test_a_task_without_a_readable_street_asks_for_three_levels_and_still_report
     assert four["all_levels"] is False and four["completion"] == 0.75
 
 
-def test_only_baseline_views_without_a_street_sign_leave_the_street_out():
+def test_a_baseline_task_asks_only_for_the_levels_its_one_view_decides():
     """The levels a task asks for follow what its views can show: the one north view of a baseline task
-    (a street sign there, or not), every level in the embodied setting (the sign is a walk away)."""
+    (what names the city, a street sign), every level in the embodied setting (the cues are a walk and a
+    wiki away). No baseline task is hard: one view and no wiki leave nothing to put together."""
     import json
 
     from ewa_mcp.core.paths import tasks_dir
     from ewa_mcp.envs.geo.graph import START, build_graph
     from ewa_mcp.envs.geo.locations import LOCATIONS_LIST
-    from ewa_mcp.envs.geo.scene import street_sign_visible
+    from ewa_mcp.envs.geo.hardness import task_difficulty
+    from ewa_mcp.envs.geo.scene import compose_view, deciding_city_cues, street_sign_visible
 
     by_id = {loc.id: loc for loc in LOCATIONS_LIST}
     seen = {"baseline": 0, "embodied": 0}
@@ -206,10 +208,18 @@ def test_only_baseline_views_without_a_street_sign_leave_the_street_out():
             setting, loc = task["metadata"]["setting"], by_id[task["metadata"]["location_id"]]
             graded = task["answer"]["graded_levels"]
             seen[setting] += 1
-            if setting == "embodied" or street_sign_visible(loc, build_graph(loc)[START], "north"):
-                assert graded is None, task["id"]
-            else:
-                assert graded == ["continent", "country", "city"], task["id"]
+            start = build_graph(loc)[START]
+            if setting == "embodied":
+                assert graded is None and task["difficulty"] == task_difficulty(loc), task["id"]
+                continue
+            # The baseline asks for what its one view decides: the city only where a landmark or the
+            # city's deciding cues show, the street only where its sign does.
+            view = compose_view(loc, START, "north")
+            names_city = view.landmark is not None or bool(deciding_city_cues(loc, view))
+            want = ["continent", "country", *(["city"] if names_city else []),
+                    *(["street"] if street_sign_visible(loc, start, "north") else [])]
+            assert (graded or ["continent", "country", "city", "street"]) == want, task["id"]
+            assert task["difficulty"] == ("easy" if loc.difficulty == "easy" else "medium"), task["id"]
     assert seen == {"baseline": 185, "embodied": 185}
 
 

@@ -257,6 +257,18 @@ def _trees(rng, loc: Location, climate: Climate, composition: str) -> tuple[tupl
     return tuple(sorted(trees, key=lambda t: -t[2]))  # far first, so near trees draw on top
 
 
+def deciding_city_cues(loc: Location, spec: ViewSpec) -> list[str]:
+    """What in a composed view names one city by itself: an area-coded telephone number (in a country
+    whose numbers carry one) and a legible regional number plate. A landmark names its city too; that is
+    the easy level's own cue (``spec.landmark``)."""
+    found = []
+    if "{a}" in loc.country.phone:
+        found += [f"phone {s.phone}" for s in spec.shops if s.phone]
+    found += [f"plate {v.plate.text}" for v in spec.vehicles
+              if v.plate and v.plate.text and v.plate.style.has_region]
+    return found
+
+
 @lru_cache(maxsize=4096)
 def compose_view(loc: Location, standpoint_id: str, heading: str) -> ViewSpec:
     if heading not in FOUR_DIRECTIONS:

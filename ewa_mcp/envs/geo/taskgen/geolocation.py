@@ -20,7 +20,7 @@ from .. import gazetteer
 from ..graph import START, build_graph
 from ..hardness import task_difficulty
 from ..locations import LOCATIONS_LIST, Location
-from ..scene import street_sign_visible
+from ..scene import compose_view, deciding_city_cues, street_sign_visible
 
 SETTINGS = ("baseline", "embodied")
 # Every call is a step (looks and wiki reading too), so the baseline has room to look once and read the wiki.
@@ -59,12 +59,28 @@ def task_id(loc: Location, setting: str) -> str:
     return f"geo-{TASK_NUMBERS[loc.id]:04d}-{setting}"
 
 
+def baseline_levels(loc: Location) -> list[str]:
+    """The levels a baseline task's one north view can decide, with no wiki to read: the continent and
+    country always; the city where the view shows what names it (a landmark, or a deciding cue: an
+    area-coded number, a regional plate); the street where it shows the street's sign. A hard location
+    shows only shared cues, which name the city only against the wiki's articles, and a city-level location
+    shows its city's cues only after a move: there the city could only be guessed."""
+    start = build_graph(loc)[START]
+    view = compose_view(loc, START, "north")
+    levels = ["continent", "country"]
+    if view.landmark is not None or deciding_city_cues(loc, view):
+        levels.append("city")
+    if street_sign_visible(loc, start, "north"):
+        levels.append("street")
+    return levels
+
+
 def answer_for(loc: Location, setting: str = "embodied") -> GeoAnswer:
-    """The location's answer; in the baseline setting without a street sign in its one view, success asks
-    for the three levels the view can show (the street is still graded and reported)."""
-    sign_seen = setting != "baseline" or street_sign_visible(loc, build_graph(loc)[START], "north")
+    """The location's answer; in the baseline setting success asks only for the levels its one view can
+    decide (``baseline_levels``); every level is still graded and reported."""
+    levels = baseline_levels(loc) if setting == "baseline" else None
     return GeoAnswer(
-        graded_levels=None if sign_seen else ["continent", "country", "city"],
+        graded_levels=None if levels is None or len(levels) == 4 else levels,
         lat=loc.lat,
         lng=loc.lng,
         continent=loc.continent or gazetteer.country_continent(loc.city.iso),
@@ -72,6 +88,15 @@ def answer_for(loc: Location, setting: str = "embodied") -> GeoAnswer:
         city=loc.city.name,
         street=loc.street,
     )
+
+
+def difficulty_for(loc: Location, setting: str) -> str:
+    """The embodied task's difficulty is the location's (hardness.py). A baseline task is easy where its view
+    shows a landmark and medium otherwise: with one view and no wiki there is nothing to put together, so
+    nothing is hard by composition (the cues a hard location needs combined are read against articles)."""
+    if setting == "embodied":
+        return task_difficulty(loc)
+    return "easy" if loc.difficulty == "easy" else "medium"
 
 
 def _oracle(loc: Location, setting: str, answer: GeoAnswer) -> list[ToolCall]:
@@ -104,7 +129,7 @@ def build_task(loc: Location, setting: str) -> Task:
     return Task(
         id=task_id(loc, setting),
         domain="geolocation",
-        difficulty=task_difficulty(loc),
+        difficulty=difficulty_for(loc, setting),
         intent=INTENTS[setting],
         start=start,
         answer=answer,
