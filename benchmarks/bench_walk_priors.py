@@ -112,6 +112,11 @@ def split_rules(store: TaskStore) -> None:
         rules["cheapest pair (budget and walk not read)"] += min(costs, key=costs.__getitem__) == target
         near = min(stores, key=from_start.__getitem__)
         rules["a pair holding the nearest store"] += near in target
+        rest = [(p, size) for p, size in items if not (p.offer(size, near) and catalog.stock(p.id, size, near) > 0)]
+        fill = [sid for sid in stores if sid != near and all(
+            p.offer(size, sid) and catalog.stock(p.id, size, sid) > 0 for p, size in rest)]
+        greedy = frozenset((near, min(fill, key=lambda sid: walk_m(nodes[near], nodes[sid])))) if fill else None
+        rules["greedy walk (nearest store, then the nearest to it with the rest)"] += greedy == target
         rules["shortest walk past both, budget not read"] += min(costs, key=route) == target
         rules["shortest walk past both within the budget (the task's rule)"] += min(within, key=route) == target
     n = len(split) or 1

@@ -26,11 +26,11 @@ def test_at_least_15_percent_hard(domain: str) -> None:
 
 
 def test_hard_shopping_orders_at_one_store_or_two_within_a_budget() -> None:
-    """Half the hard tasks order three products at one store, the other half (the split form) a list of three
-    or four in two orders at two stores (tests/core/test_shopping_constraints.py checks the split)."""
+    """18 of the 60 hard tasks order three products at one store, the other 42 (the split form) a list of
+    three or four in two orders at two stores (tests/core/test_shopping_constraints.py checks the split)."""
     hard = [t for t in suite("shopping") if t["difficulty"] == "hard"]
     split = [t for t in hard if t["metadata"]["form"] == "split"]
-    assert len(hard) == 60 and len(split) == 30
+    assert len(hard) == 60 and len(split) == 42
     for task in split:
         (goal,) = task["web_goals"]
         assert goal["kind"] == "orders_split" and len(set(goal["store_ids"])) == 2, task["id"]

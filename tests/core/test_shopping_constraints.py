@@ -187,7 +187,7 @@ def test_named_stores_each_rival_fails_by_stock_or_budget() -> None:
     than at the answer, so "the cheapest total" picks it) or the budget (all in stock, over it by 25 cents or
     more); no two named stores are within 100 m of each other's walk."""
     named = [t for t in TASKS if t["id"].startswith("shopping-pair-") and t["metadata"]["form"] == "named"]
-    assert len(named) >= 20
+    assert len(named) >= 18
     for task in named:
         meta = task["metadata"]
         totals, budget, answer = meta["totals"], meta["budget"], meta["store_id"]
@@ -270,7 +270,7 @@ def _split_world(task: dict) -> tuple[dict[tuple[str, str], float], dict[tuple[s
 
 
 def test_split_lists_no_single_store_fills_and_the_goals_name_the_pair() -> None:
-    assert len(SPLIT) == 30
+    assert len(SPLIT) == 42
     assert {len(t["metadata"]["products"]) for t in SPLIT} == {3, 4}
     for task in SPLIT:
         meta = task["metadata"]

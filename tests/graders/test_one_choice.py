@@ -123,7 +123,7 @@ def test_over_the_suite_split_orders_pass_and_ordering_everywhere_fails() -> Non
 
     split = [raw for path in sorted((TASKS / "shopping").glob("*.json")) for raw in json.loads(path.read_text())
              if any(g["kind"] == "orders_split" for g in raw["web_goals"])]
-    assert len(split) == 30
+    assert len(split) == 42
     every = [s.id for s in catalog.load_stores()]
     for raw in split:
         (goal,) = [OrdersSplit.model_validate(g) for g in raw["web_goals"]]
