@@ -68,3 +68,22 @@ def test_over_the_budget_fails_and_nothing_placed_fails() -> None:
     assert at_budget.met is True  # "at most" includes the budget itself
     none = check_orders_split(goal, [])
     assert none.met is False and "no store" in (none.note or "")
+
+
+def test_a_split_goal_naming_missing_products_or_stores_is_refused_by_name() -> None:
+    """The task-file check names each unknown product and store of an orders_split goal by its place."""
+    import json
+
+    from ewa_mcp.core.taskmodel import Task
+    from ewa_mcp.taskrefs import ReferenceChecker
+
+    tasks = Path(__file__).resolve().parents[2] / "tasks" / "shopping"
+    raw = next(t for p in sorted(tasks.glob("*.json")) for t in json.loads(p.read_text("utf-8"))
+               if t["web_goals"] and t["web_goals"][0]["kind"] == "orders_split")
+    checker = ReferenceChecker()
+    assert checker.missing(Task.model_validate(raw)) == []
+    raw["web_goals"][0]["items"][1]["product_id"] = "prod-unicorn"
+    raw["web_goals"][0]["store_ids"][0] = "store-nowhere"
+    found = checker.missing(Task.model_validate(raw))
+    assert [p.split(":")[0] for p in found] == ["web_goals.0.items.1.product_id", "web_goals.0.store_ids.0"]
+    assert "'prod-unicorn'" in found[0] and "'store-nowhere'" in found[1]
