@@ -55,7 +55,7 @@ def hard_cues(store: TaskStore) -> None:
     from ewa_mcp.websites.shop import catalog
 
     cues: Counter[str] = Counter()
-    pair = [t for t in store.all("shopping") if t.difficulty == "hard"]
+    pair = [t for t in store.all("shopping") if t.difficulty == "hard" and t.metadata.get("form") != "split"]
     for t in pair:
         meta, start = t.metadata, t.start.embodied.node
         by_walk = sorted(meta["store_nodes"], key=lambda sid: walk_m(start, meta["store_nodes"][sid]))
@@ -72,7 +72,7 @@ def hard_cues(store: TaskStore) -> None:
                                                for p, size in zip(meta["products"], meta["sizes"], strict=True))]
         cues["the only named store with all in stock"] += stocked == [meta["store_id"]]
     n_named = cues.pop("named-stores tasks")
-    print(f"\nshopping hard ({len(pair)} tasks, {n_named} naming stores): the cue alone picks the target")
+    print(f"\nshopping hard, one store ({len(pair)} tasks, {n_named} naming stores): the cue alone picks the target")
     for cue in [f"{r} of all stores" for r in ("nearest", "second nearest", "third nearest", "farthest")] + [
             f"{r} named" for r in ("nearest", "middle", "farthest", "cheapest total")] + [
             "the only named store with all in stock"]:
@@ -105,6 +105,53 @@ def shortest_form(store: TaskStore) -> None:
           f"the best order beats the second by {margins[0]:.0f} to {margins[-1]:.0f} m):")
     for rule, hits in rules.items():
         print(f"  {rule}: {hits} ({100 * hits / max(len(tasks), 1):.0f} %)")
+
+
+def split_rules(store: TaskStore) -> None:
+    """Shopping hard, the split form (two orders at two stores): how often each pair rule picks the target pair
+    (any order of the two), worked out from the catalogue and the map. The task's own rule (the shortest walk
+    past one store to the other, of the pairs within the budget) is printed as a check: 100 %."""
+    from ewa_mcp.envs.street.taskgen.shopping import split_costs
+    from ewa_mcp.websites.shop import catalog
+
+    stores = [s.id for s in catalog.load_stores()]
+    split = [t for t in store.all("shopping") if t.metadata.get("form") == "split"]
+    rules: Counter[str] = Counter()
+    targets: Counter[str] = Counter()
+    for t in split:
+        meta, start = t.metadata, t.start.embodied.node
+        nodes = meta["store_nodes"]
+        items = [(catalog.get_product(p), size) for p, size in zip(meta["products"], meta["sizes"], strict=True)]
+        costs = {frozenset(k.split("|")): c for k, c in split_costs(items, stores).items()}
+        within = [k for k, c in costs.items() if c <= meta["budget"]]
+        from_start = {sid: walk_m(start, nodes[sid]) for sid in stores}
+
+        def route(pair: frozenset[str]) -> float:
+            a, b = sorted(pair)
+            return min(from_start[a] + walk_m(nodes[a], nodes[b]), from_start[b] + walk_m(nodes[b], nodes[a]))
+
+        target = frozenset(meta["store_pair"])
+        targets[" & ".join(sorted(target))] += 1
+        two_nearest = frozenset(sorted(stores, key=from_start.__getitem__)[:2])
+        rules["nearest pair (the two stores nearest the start)"] += two_nearest == target
+        rules["nearest pair within the budget (sum of the two walks from the start)"] += \
+            min(within, key=lambda k: sum(from_start[s] for s in k)) == target
+        rules["cheapest pair (budget and walk not read)"] += min(costs, key=costs.__getitem__) == target
+        near = min(stores, key=from_start.__getitem__)
+        rules["a pair holding the nearest store"] += near in target
+        rest = [(p, size) for p, size in items if not (p.offer(size, near) and catalog.stock(p.id, size, near) > 0)]
+        fill = [sid for sid in stores if sid != near and all(
+            p.offer(size, sid) and catalog.stock(p.id, size, sid) > 0 for p, size in rest)]
+        greedy = frozenset((near, min(fill, key=lambda sid: walk_m(nodes[near], nodes[sid])))) if fill else None
+        rules["greedy walk (nearest store, then the nearest to it with the rest)"] += greedy == target
+        rules["shortest walk past both, budget not read"] += min(costs, key=route) == target
+        rules["shortest walk past both within the budget (the task's rule)"] += min(within, key=route) == target
+    n = len(split) or 1
+    print(f"\nshopping hard, split form ({len(split)} tasks, {len(targets)} store pairs as targets): "
+          "the pair rule picks the target pair")
+    for rule, hits in rules.items():
+        print(f"  {rule}: {hits} of {len(split)} ({100 * hits / n:.0f} %)")
+    print("  targets: " + ", ".join(f"{k} {v}" for k, v in targets.most_common()))
 
 
 def main() -> int:
@@ -150,15 +197,17 @@ def main() -> int:
         start, candidates = t.start.embodied.node, [sid for sid in sellers(items) if not named or sid in named]
         right_items = (answer is None or t.answer is None or answer in t.answer.must_include) and (
             "product_id" not in t.metadata or items[0][0].id == t.metadata["product_id"])
+        target = t.metadata.get("store_id")  # none for the split form: one store cannot meet two orders' goal
         for rule in ("nearest", "cheapest", "step-limit"):
             picked = pick_store(rule, candidates, items, start, t.step_limit)
-            cell[f"{rule}-store"] += right_items and picked == t.metadata["store_id"]
-        cell["first named store (directions-walker)"] += right_items and bool(named) and named[0] == t.metadata["store_id"]
+            cell[f"{rule}-store"] += right_items and target is not None and picked == target
+        cell["first named store (directions-walker)"] += right_items and bool(named) and named[0] == target
     print("\nshopping: the rule's store (and, for a question, its guess of product or size) is the target")
     for (difficulty, fam), cell in sorted(cells.items()):
         n = cell.pop("tasks")
         print(f"  {difficulty} {fam} ({n} tasks): " + ", ".join(f"{r} {h} ({100 * h / n:.0f} %)" for r, h in cell.items()))
     hard_cues(store)
+    split_rules(store)
     sizes = Counter(t.difficulty or "-" for t in store.all("shopping"))
     for difficulty in ("easy", "medium", "hard"):
         rows = [c for (d, _), c in cells.items() if d == difficulty]

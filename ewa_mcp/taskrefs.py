@@ -18,7 +18,8 @@ from pathlib import Path
 from typing import Any
 
 from .core.taskmodel import Task
-from .envs.browser.goals import DirectionsShown, OrderPlaced, PageVisited, RecipeCompleted, RecipesCompleted
+from .envs.browser.goals import (DirectionsShown, OrderPlaced, OrdersSplit, PageVisited, RecipeCompleted,
+                                 RecipesCompleted)
 from .envs.geo.goals import GeoStart
 from .envs.kitchen.goals import KitchenStart
 from .envs.street.goals import StreetStart, _StreetTarget
@@ -147,6 +148,14 @@ class ReferenceChecker:
                         f"{_some(self._products)}")
                 if goal.store_id is not None and goal.store_id not in self._stores:
                     add(f"{where}.store_id", f"unknown store {goal.store_id!r}; the stores are {_some(self._stores)}")
+            elif isinstance(goal, OrdersSplit):
+                for j, item in enumerate(goal.items):
+                    if item.product_id not in self._products:
+                        add(f"{where}.items.{j}.product_id", f"unknown product {item.product_id!r}; the shop sells "
+                            f"{_some(self._products)}")
+                for j, store in enumerate(goal.store_ids):
+                    if store not in self._stores:
+                        add(f"{where}.store_ids.{j}", f"unknown store {store!r}; the stores are {_some(self._stores)}")
             elif isinstance(goal, DirectionsShown):
                 add(f"{where}.origin", self._place(goal.origin))
                 add(f"{where}.destination", self._place(goal.destination))

@@ -40,6 +40,8 @@ def answer_keys(task: dict[str, Any]) -> dict[str, Any]:
         if goal["kind"] == "order_placed":
             keys.update({f"store{i}": goal.get("store_id"), f"product{i}": goal["product_id"],
                          f"size{i}": goal.get("size")})
+        elif goal["kind"] == "orders_split":
+            keys[f"pair{i}"] = tuple(goal["store_ids"])
         elif goal["kind"] == "recipe_completed":
             keys["recipe"] = goal["recipe_id"]
         elif goal["kind"] == "recipes_completed":  # two dishes: the pair, and the form itself

@@ -103,7 +103,7 @@ def test_over_the_suite_ordering_everywhere_fails_and_the_asked_orders_pass() ->
             stores.update(g.store_id for g in goals if g.store_id)
             if goals:
                 tasks.append(goals)
-    assert len(tasks) > 500 and len(stores) >= 4
+    assert len(tasks) > 450 and len(stores) >= 4  # and 30 split tasks (orders_split): see below
     for goals in tasks:
         asked = _events_for(goals)
         assert all(check_order(g, asked, goals).met for g in goals)
@@ -111,3 +111,35 @@ def test_over_the_suite_ordering_everywhere_fails_and_the_asked_orders_pass() ->
         elsewhere = [order_event(f"x{s}", s, item(first.product_id, first.size, first.quantity))
                      for s in sorted(stores) if s != first.store_id]
         assert not any(check_order(g, asked + elsewhere, goals).met for g in goals)
+
+
+def test_over_the_suite_split_orders_pass_and_ordering_everywhere_fails() -> None:
+    """Every split task (orders_split): the oracle's two orders, each item where it is cheaper of the two
+    stores, pass; the same plus the first item at every other store fails (a third store, the item again)."""
+    from ewa_mcp.envs.browser.checks import check_orders_split
+    from ewa_mcp.envs.browser.goals import OrdersSplit
+    from ewa_mcp.envs.street.taskgen.shopping import split_prices
+    from ewa_mcp.websites.shop import catalog
+
+    split = [raw for path in sorted((TASKS / "shopping").glob("*.json")) for raw in json.loads(path.read_text())
+             if any(g["kind"] == "orders_split" for g in raw["web_goals"])]
+    assert len(split) == 42
+    every = [s.id for s in catalog.load_stores()]
+    for raw in split:
+        (goal,) = [OrdersSplit.model_validate(g) for g in raw["web_goals"]]
+        items = [(catalog.get_product(i.product_id), i.size) for i in goal.items]
+        prices = split_prices(items, (goal.store_ids[0], goal.store_ids[1]))
+        assert prices is not None, raw["id"]
+        asked = []
+        for sid in goal.store_ids:
+            lines = [item(p.id, size) for (p, size), (at, _) in zip(items, prices, strict=True) if at == sid]
+            event = order_event(f"o-{sid}", sid, *lines)
+            event["order"]["total"] = round(sum(price for at, price in prices if at == sid), 2)
+            asked.append(event)
+        assert check_orders_split(goal, asked).met, raw["id"]
+        first = goal.items[0]
+        elsewhere = [order_event(f"x{s}", s, item(first.product_id, first.size)) for s in every
+                     if s not in goal.store_ids]
+        for event in elsewhere:
+            event["order"]["total"] = 0.0
+        assert not check_orders_split(goal, asked + elsewhere).met, raw["id"]

@@ -1,9 +1,8 @@
 """Hard by composition (issue 26, principle 6): a hard task passes only when every part is right together.
 
 Shopping (played through the real server, Chromium and street graph, graded from the run directory): the
-oracle of a budget task passes; ordering the three items at the nearest store that has them (ignoring the
-budget) fails, so does ordering them at any item's cheapest store, and so does ordering at the right store
-but walking to that nearer one. Navigation (the same way):
+oracle of a split task (two orders at two stores within one budget) passes; ordering at the pair with a
+shorter walk (over the budget) fails, and so do the right orders walked the other way round. Navigation (the same way):
 four stops in the answer's order (the wiki's by year built, or the shortest on foot) pass; the same walk in
 the order the intent lists them fails, and so does the right last stop with two stops before it swapped (and,
 for the shortest order, the greedy nearest-next order). Cooking (graded offline with
@@ -40,48 +39,65 @@ def store() -> TaskStore:
     return TaskStore([tasks_dir()])
 
 
-def budget_task(store: TaskStore) -> Task:
-    """The first hard shopping task of the "nearest store within the budget" form."""
+def split_task(store: TaskStore) -> Task:
+    """The first hard shopping task of the split form (two orders at two stores within one budget)."""
     return next(t for t in sorted(store.all("shopping"), key=lambda t: t.id)
-                if t.difficulty == "hard" and t.metadata["named_stores"] is None)
+                if t.difficulty == "hard" and t.metadata["form"] == "split")
 
 
-def nearer_over_budget(task: Task) -> str:
-    """The nearest store that has all three in stock: over the budget, by construction."""
+def shorter_over_budget(task: Task) -> tuple[str, str]:
+    """A pair of stores that fills the list on a shorter walk than the target's, over the budget (by
+    construction), in its shorter order."""
     meta, world = task.metadata, get_world()
-    both = [sid for sid in meta["totals"] if all(shop.stock(p, s, sid) > 0 for p, s in zip(meta["products"], meta["sizes"]))]
-    return min(both, key=lambda sid: world.directions(task.start.embodied.node, meta["store_nodes"][sid]).distance_m)
+    start, nodes = task.start.embodied.node, meta["store_nodes"]
+
+    def walk(a: str, b: str) -> float:
+        return world.directions(start, nodes[a]).distance_m + world.directions(nodes[a], nodes[b]).distance_m
+
+    ordered = [(a, b) for k in meta["pair_costs"] for a, b in (k.split("|"), k.split("|")[::-1])
+               if meta["pair_costs"][k] > meta["budget"]]
+    return min(ordered, key=lambda r: walk(*r))
 
 
-def with_store(task: Task, order_at: str, walk_to: str) -> Task:
-    """The oracle's plan with the order placed at ``order_at`` and the walk ending at ``walk_to``."""
+def split_plan(task: Task, first: str, second: str, walk: list[str]) -> Task:
+    """Orders of the list at ``first`` and ``second`` (each item where it is cheaper of the two, as the
+    oracle does), then the walk from the start past the stores in ``walk``."""
+    from ewa_mcp.envs.street.taskgen.shopping import buy_oracle, split_prices
+    from ewa_mcp.taskgen.common import call, ref, site_url
+
     world, meta = get_world(), task.metadata
-    name = {s.id: s.name for s in shop.load_stores()}
+    items = [(shop.get_product(p), s) for p, s in zip(meta["products"], meta["sizes"], strict=True)]
+    prices = split_prices(items, (first, second))
+    assert prices is not None
     calls: list[ToolCall] = []
-    for c in task.oracle:
-        if c.tool == "browser_type" and c.args.get("text") == name[meta["store_id"]]:
-            c = ToolCall(tool=c.tool, args={**c.args, "text": name[order_at]})
-        if c.tool in ("street_move", "street_stop", "finish_episode"):
-            continue
-        calls.append(c)
-    route = world.directions(task.start.embodied.node, meta["store_nodes"][walk_to])
-    calls += [ToolCall(tool="street_move", args={"neighbour": n}) for n in route.nodes[1:]]
-    calls += [ToolCall(tool="street_stop", args={}), ToolCall(tool="finish_episode", args={})]
+    for sid in (first, second):
+        store_obj = shop.get_store(sid)
+        calls += [c for (product, size), (at, _) in zip(items, prices) if at == sid
+                  for c in buy_oracle(product, size, store_obj)[:4]]
+        calls += [call("browser_goto", url=site_url("shop", "/checkout")),
+                  call("browser_click", element=ref("button", "Place order"))]
+    calls.append(call("switch_environment", target="embodied", message="walk"))
+    here = task.start.embodied.node
+    for sid in walk:
+        route = world.directions(here, meta["store_nodes"][sid])
+        calls += [call("street_move", neighbour=n) for n in route.nodes[1:]]
+        here = meta["store_nodes"][sid]
+    calls += [call("street_stop"), call("finish_episode")]
     return task.model_copy(update={"oracle": calls})
 
 
 @needs_browser
-def test_budget_task_needs_budget_store_and_walk_together(store, tmp_path):
-    task = budget_task(store)
-    answer, wrong = task.metadata["store_id"], nearer_over_budget(task)
-    assert wrong != answer
+def test_split_task_needs_the_pair_the_budget_and_the_order_together(store, tmp_path):
+    task = split_task(store)
+    first, second = task.metadata["store_pair"]
+    cheap_first, cheap_second = shorter_over_budget(task)
+    assert {cheap_first, cheap_second} != {first, second}
     assert play(task, tmp_path, "oracle")
-    assert not play(with_store(task, wrong, wrong), tmp_path, "ignore-budget")
-    assert not play(with_store(task, answer, wrong), tmp_path, "wrong-walk")
-    cheapest = {shop.cheapest_store(p, s) for p, s in zip(task.metadata["products"], task.metadata["sizes"])}
-    assert len(cheapest) >= 2 and answer not in cheapest
-    for n, store_id in enumerate(sorted(cheapest)):  # one item's cheapest store, ordered at and walked to
-        assert not play(with_store(task, store_id, store_id), tmp_path, f"item-cheapest-{n}")
+    assert play(split_plan(task, first, second, [first, second]), tmp_path, "same-plan-rebuilt")
+    # The shorter walk's pair, over the budget: orders there fail, and so does the walk past it.
+    assert not play(split_plan(task, cheap_first, cheap_second, [cheap_first, cheap_second]), tmp_path, "over-budget")
+    # The right orders, walked the other way round (ending at the first store): the order of the walk is graded.
+    assert not play(split_plan(task, first, second, [second, first]), tmp_path, "reversed-walk")
 
 
 def step_told_tasks(store: TaskStore) -> list[Task]:

@@ -9,7 +9,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from ewa_mcp.envs.browser.goals import DirectionsShown, OrderPlaced, PageVisited, RecipeCompleted, RecipesCompleted
+from ewa_mcp.envs.browser.goals import (DirectionsShown, OrderPlaced, OrdersSplit, PageVisited, RecipeCompleted,
+                                        RecipesCompleted)
 
 from ewa_mcp.graders.models import CheckContext, ConditionResult
 
@@ -180,6 +181,54 @@ def check_order(goal: OrderPlaced, events: list[dict[str, Any]],
     return ConditionResult(side="web", kind=goal.kind, description=_describe(goal), met=True, detail=detail)
 
 
+def _dollars(value: Any) -> float | None:
+    return float(value) if isinstance(value, int | float) and not isinstance(value, bool) else None
+
+
+def check_orders_split(goal: OrdersSplit, events: list[dict[str, Any]]) -> ConditionResult:
+    """The list bought in two orders at two stores (one choice means one choice, issue 26): exactly one order
+    at each of the goal's stores and no other order, every item of the list exactly once over the orders
+    (quantity 1, at whichever of the stores), no line the list does not ask for, and the totals added within
+    ``max_total``. How the items are split between the stores is the buyer's choice."""
+    placed = orders(events)
+    wanted = {(i.product_id, i.size.strip().casefold()) for i in goal.items}
+    got: dict[tuple[str, str], int] = {}
+    extra: list[str] = []
+    for order in placed:
+        for item in order.get("items") or []:
+            if not isinstance(item, dict):
+                continue
+            key = (str(item.get("product_id")), str(item.get("size") or "").strip().casefold())
+            quantity = _as_int(item.get("quantity")) or 0
+            if key in wanted:
+                got[key] = got.get(key, 0) + quantity
+            else:
+                extra.append(f"{item.get('product_id')} ({item.get('size')}) at {order.get('store_id')}")
+    stores = [str(o.get("store_id")) for o in placed]
+    totals = [_dollars(o.get("total")) for o in placed]
+    spent = round(sum(t for t in totals if t is not None), 2)
+    detail: dict[str, Any] = {"orders_placed": len(placed), "order_stores": stores, "spent": spent,
+                              "max_total": goal.max_total}
+    problems: list[str] = []
+    if sorted(stores) != sorted(goal.store_ids):
+        want = " and ".join(goal.store_ids)
+        problems.append(f"the orders were placed at {', '.join(stores) or 'no store'}; the task's choice is one "
+                        f"order at each of {want}, and no other order")
+    missing = [f"{p} ({s})" for p, s in sorted(wanted) if got.get((p, s), 0) == 0]
+    again = [f"{p} ({s})" for p, s in sorted(wanted) if got.get((p, s), 0) > 1]
+    if missing:
+        problems.append(f"not ordered: {', '.join(missing)}")
+    if again:
+        problems.append(f"ordered more than once: {', '.join(again)}")
+    if extra:
+        problems.append(f"ordered beyond the list: {', '.join(extra)}")
+    if any(t is None for t in totals) or spent > goal.max_total + 1e-9:
+        problems.append(f"the orders add up to ${spent:.2f}, over the budget of ${goal.max_total:.2f}"
+                        if all(t is not None for t in totals) else "an order has no total")
+    return ConditionResult(side="web", kind=goal.kind, description=_describe(goal), met=not problems,
+                           detail=detail, note="; ".join(problems) or None)
+
+
 def check_directions(goal: DirectionsShown, events: list[dict[str, Any]]) -> ConditionResult:
     shown = [e for e in events if e.get("site") == "map" and e.get("type") == "directions"]
     met = any(e.get("origin") == goal.origin and e.get("destination") == goal.destination for e in shown)
@@ -205,6 +254,8 @@ def check_web_goal(goal: Any, events: list[dict[str, Any]], task_goals: list[Any
         return check_recipes(goal, events)
     if isinstance(goal, OrderPlaced):
         return check_order(goal, events, task_goals)
+    if isinstance(goal, OrdersSplit):
+        return check_orders_split(goal, events)
     if isinstance(goal, DirectionsShown):
         return check_directions(goal, events)
     if isinstance(goal, PageVisited):
@@ -224,6 +275,9 @@ def _describe(goal: Any) -> str:
         if goal.store_id:
             parts.append(f"at {goal.store_id}")
         return "order " + ", ".join(parts)
+    if isinstance(goal, OrdersSplit):
+        return (f"{len(goal.items)} items in one order at each of {' and '.join(goal.store_ids)}, "
+                f"${goal.max_total:.2f} at most in all")
     if isinstance(goal, DirectionsShown):
         return f"directions {goal.origin} → {goal.destination}"
     if isinstance(goal, PageVisited):

@@ -39,6 +39,24 @@ class OrderPlaced(StrictModel):
     store_id: str | None = None
 
 
+class ItemRef(StrictModel):
+    """One product and size of a shopping list."""
+
+    product_id: str
+    size: str
+
+
+class OrdersSplit(StrictModel):
+    """Web: the list was bought in exactly one order at each of ``store_ids`` (no other order), each item
+    once in all (quantity 1, at either store: any split is fine), nothing else, and the orders' totals add
+    up to at most ``max_total`` dollars."""
+
+    kind: Literal["orders_split"] = "orders_split"
+    items: list[ItemRef]
+    store_ids: list[str]
+    max_total: float
+
+
 class DirectionsShown(StrictModel):
     """Web: the map site showed walking directions between these two places."""
 

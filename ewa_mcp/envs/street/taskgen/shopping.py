@@ -9,8 +9,8 @@ from typing import Any
 from ewa_mcp.graders.textnorm import is_number, tokens
 from ..world import get_world
 from ewa_mcp.core.taskmodel import AnswerNumbers, StartState, Task, TextAnswer
-from ewa_mcp.envs.browser.goals import OrderPlaced, WebStart
-from ewa_mcp.envs.street.goals import ReachedPlace, StreetStart
+from ewa_mcp.envs.browser.goals import ItemRef, OrderPlaced, OrdersSplit, WebStart
+from ewa_mcp.envs.street.goals import PassedPlace, ReachedPlace, StreetStart
 from ewa_mcp.websites.shop import catalog
 from ewa_mcp.taskgen.answer_checks import CALORIES, answer_rule, committed_answer
 from ewa_mcp.taskgen.common import WALK_RULE, call, ref, rng_for, site_url, step_budget
@@ -117,6 +117,13 @@ class Context:
         try:
             return max(self.world.directions(place.node, s.node).distance_m
                        for s in self.store_places.values()) <= MAX_WALK_M
+        except ValueError:
+            return False
+
+    def reaches_stores(self, place: Any) -> bool:
+        """Every store can be walked to from this place."""
+        try:
+            return all(self.walk(place, sid) is not None for sid in self.stores)
         except ValueError:
             return False
 
@@ -428,19 +435,225 @@ def _listing(items: list[tuple[Any, str]]) -> str:
     return ", ".join(named[:-1]) + " and " + named[-1]
 
 
+# The split form of the hard pair tasks (issue 26, principle 6): a list no single store has in stock, bought in
+# two orders at two stores within one budget, on the shortest walk from the start past one store to the other.
+SPLIT_ITEMS = (3, 4)
+SPLIT_MAX_WALK_M = 3500.0  # the whole walk, start past the first store to the second: about 175 moves, which
+# leaves the hard step budget (280) room for some 60 steps of reading prices and routes beyond the oracle's
+SPLIT_PAIR_GAP_M = 100.0  # the target walk beats every other pair within the budget by this much
+SPLIT_ORDER_GAP_M = 150.0  # and its own pair visited the other way round by this much: the order is graded
+SPLIT_SHORTCUT_SHARE = 0.3  # each tempting shortcut picks the target pair in at most this share of split tasks
+# Named-stores tasks (the rest are the split form). A store rule picks among the three stores named, right in a
+# third of them by construction (positions and ranks are cycled), and wrong in every split task: 18 of 60 keeps
+# any such rule at 10 % of the hard tasks (the issue's bar for heuristics), and six full cycles of the named
+# form's cells (NAMED_RANKS, RIVAL_KINDS, the answer's place in the sentence).
+NAMED_TASKS = 18
+SPLIT_ROUNDS = 8
+
+
+def pair_key(a: str, b: str) -> str:
+    """A pair of stores, unordered, as metadata names it ("a|b", ids sorted)."""
+    return "|".join(sorted((a, b)))
+
+
+def split_prices(items: list[tuple[Any, str]], pair: tuple[str, str]) -> list[tuple[str, float]] | None:
+    """Where each item is cheapest between the pair's two stores among those with it in stock, and its price
+    there; None when neither has some item in stock."""
+    out = []
+    for product, size in items:
+        offers = [(sid, o.price) for sid in pair if (o := product.offer(size, sid)) is not None
+                  and in_stock(product, size, sid)]
+        if not offers:
+            return None
+        out.append(min(offers, key=lambda x: x[1]))
+    return out
+
+
+def split_costs(items: list[tuple[Any, str]], store_ids: list[str]) -> dict[str, float]:
+    """Every pair of stores that can fill the list between them (``pair_key``), with the least it costs there."""
+    costs = {}
+    for i, a in enumerate(store_ids):
+        for b in store_ids[i + 1:]:
+            prices = split_prices(items, (a, b))
+            if prices is not None:
+                costs[pair_key(a, b)] = round(sum(p for _, p in prices), 2)
+    return costs
+
+
+def split_shortcuts(items: list[tuple[Any, str]], store_ids: list[str], from_start: dict[str, float],
+                    between: Any, costs: dict[str, float], budget: float) -> dict[str, str | None]:
+    """The pair each tempting shortcut picks (``pair_key``, or None where it picks none): the pair holding the
+    nearest store (of the pairs within the budget, the shortest walk among those holding it), the pair that
+    fills the list cheapest, the greedy walk (the nearest store first, then the store nearest to it that has
+    the rest in stock, budget unread) and the pair within the budget whose two stores are nearest the start
+    by the sum of the two walks from it (not the walk past one to the other)."""
+    within = [k for k, c in costs.items() if c <= budget]
+    walks = {k: min(from_start[a] + between(a, b) for a, b in (k.split("|"), k.split("|")[::-1])) for k in within}
+    nearest = min(store_ids, key=lambda sid: from_start[sid])
+    holding = [k for k in within if nearest in k.split("|")]
+    rest = [(p, size) for p, size in items if not in_stock(p, size, nearest)]
+    fill = [sid for sid in store_ids if sid != nearest and all(in_stock(p, size, sid) for p, size in rest)]
+    return {
+        "nearest store": min(holding, key=lambda k: walks[k]) if holding else None,
+        "cheapest pair": min(costs, key=lambda k: costs[k]) if costs else None,
+        "greedy walk": pair_key(nearest, min(fill, key=lambda sid: between(nearest, sid))) if fill else None,
+        "straight sum": min(within, key=lambda k: sum(from_start[sid] for sid in k.split("|"))) if within else None,
+    }
+
+
+def split_tasks(ctx: Context, numbers: list[int]) -> dict[int, Task]:
+    """The split form for the task numbers given: three or four items, no store with all of them in stock, so
+    two orders at two stores. Every pair of stores that can fill the list is a candidate, priced at the cheaper
+    store of the two for each item; the answer is the pair within the budget with the shortest walk from the
+    start past one of its stores to the other, visited in that order. Each part decides: some pair with a
+    shorter walk is over the budget, some other pair within it is longer (by 100 m or more), the same pair the
+    other way round is 150 m or more longer, and the shortcuts (``split_shortcuts``) each pick the answer in
+    at most about a third of the tasks. Answers spread over the six pairs."""
+    rng = rng_for("shopping", "pair-split")
+    store_ids = list(ctx.stores)
+    between_cache: dict[tuple[str, str], float] = {}
+
+    def between(a: str, b: str) -> float:
+        if (a, b) not in between_cache:
+            between_cache[(a, b)] = ctx.world.directions(ctx.store_places[a].node, ctx.store_places[b].node).distance_m
+        return between_cache[(a, b)]
+
+    pairs = {pair_key(a, b): 0 for i, a in enumerate(store_ids) for b in store_ids[i + 1:]}
+    # Items drawn by which stores lack them (sold out or not sold), each such set as likely as the next: drawn
+    # uniformly, nearly every list of three or four has a store with all of them.
+    lacking: dict[frozenset[str], list[tuple[Any, str]]] = {}
+    for product in ctx.products:
+        for size in product.sizes:
+            missing = frozenset(sid for sid in store_ids if not in_stock(product, size.label, sid))
+            if missing and len(missing) < len(store_ids):
+                lacking.setdefault(missing, []).append((product, size.label))
+    kinds = sorted(lacking, key=sorted)
+    # Any named place the walk fits from: starts between two stores far apart are where the walk past one
+    # store to the other and the two walks from the start rank the pairs differently.
+    starts = [p for p in sorted(ctx.world.places.values(), key=lambda p: p.id) if p.city == "manhattan"
+              and p.kind not in ("store", "shop", "intersection", "address") and ctx.reaches_stores(p)]
+    hits = {name: 0 for name in ("nearest store", "cheapest pair", "greedy walk", "straight sum")}
+    cap = int(SPLIT_SHORTCUT_SHARE * len(numbers))
+    pair_cap = int(SPLIT_SHORTCUT_SHARE * len(numbers))
+    want = {"items": SPLIT_ITEMS[0]}
+
+    def draw() -> Any:
+        items = [rng.choice(lacking[rng.choice(kinds)]) for _ in range(want["items"])]
+        if len({p.id for p, _ in items}) < len(items):
+            return None  # one product twice
+        if any(all(in_stock(p, size, sid) for p, size in items) for sid in store_ids):
+            return None  # some store fills the list alone
+        start = rng.choice(starts)
+        costs = split_costs(items, store_ids)
+        from_start = {sid: ctx.walk(start, sid).distance_m for sid in store_ids}
+        route = {(a, b): from_start[a] + between(a, b) for k in costs for a, b in (k.split("|"), k.split("|")[::-1])}
+        best = {k: min(((a, b), (b, a)), key=lambda r: route[r]) for k in costs for a, b in [k.split("|")]}
+        ranked = sorted(costs, key=lambda k: route[best[k]])
+        for at in range(1, len(ranked)):  # never the pair with the shortest walk: the budget must decide
+            target = ranked[at]
+            budget = pair_budget(costs[target], [costs[k] for k in ranked[:at]])
+            if budget is None:
+                continue
+            within = [k for k in ranked if costs[k] <= budget]
+            first, second = best[target]
+            if len(within) < 2 or route[(first, second)] > SPLIT_MAX_WALK_M:
+                return None  # a pair within the budget must be longer; the walk must fit the step budget
+            if route[(second, first)] - route[(first, second)] < SPLIT_ORDER_GAP_M \
+                    or route[best[within[1]]] - route[(first, second)] < SPLIT_PAIR_GAP_M:
+                return None  # the order of the walk, and the next pair within the budget, by a clear margin
+            if pairs[target] >= pair_cap:
+                return None  # the central pairs have the shortest walks most often: no pair the target of most
+            picked = split_shortcuts(items, store_ids, from_start, between, costs, budget)
+            if any(hits[name] >= cap for name, k in picked.items() if k == target):
+                return None  # that shortcut has picked the answer in its share of the tasks already
+            return items, start, (first, second), budget, costs, route, picked
+        return None
+
+    out: dict[int, Task] = {}
+    for cell, n in enumerate(numbers):
+        want["items"] = SPLIT_ITEMS[cell % len(SPLIT_ITEMS)]
+        while True:
+            for _ in range(SPLIT_ROUNDS):  # late in the suite few draws are open to a shortcut: try longer
+                picked = balanced(draw, lambda c: pair_key(*c[2]), pairs, tries=PAIR_TRIES)
+                if picked is not None:
+                    break
+            else:
+                raise RuntimeError(f"no split task could be drawn for shopping-pair-{n:03d}")
+            items, start, (first, second), budget, costs, route, shortcuts = picked
+            task = _split_task(ctx, rng, n, items, start, first, second, budget, costs, route, between, shortcuts)
+            if all(t.intent != task.intent for t in out.values()):
+                break
+            pairs[pair_key(first, second)] -= 1  # the same question twice
+        for name, k in shortcuts.items():
+            hits[name] += k == pair_key(first, second)
+        out[n] = task
+    return out
+
+
+def _split_task(ctx: Context, rng: Any, n: int, items: list[tuple[Any, str]], start: Any, first: str, second: str,
+                budget: float, costs: dict[str, float], route: dict[tuple[str, str], float], between: Any,
+                shortcuts: dict[str, str | None]) -> Task:
+    money, count = f"${budget:.2f}", {3: "three", 4: "four"}[len(items)]
+    intent = (f"Buy me {_listing(items)}. No single store has all {count} in stock, so buy them in two orders for "
+              f"pickup at two different stores, each item in exactly one of the orders, spending at most {money} "
+              f"in all (the two orders' totals added together). Where both stores have an item in stock, buy it at "
+              f"either one, as long as the two totals stay within {money}. Of the pairs of stores that can fill "
+              f"the list within {money} this way, pick the pair with the shortest walk from {start.name} to one "
+              f"of its stores and on to the other (count both ways round for each pair: the walk from "
+              f"{start.name} to the first store plus the walk from there to the second). Then walk that route "
+              f"from {start.name}: past the first store, ending at the second. {WALK_RULE}")
+    prices = split_prices(items, (first, second))
+    assert prices is not None
+    at = {sid: [(p, size) for (p, size), (where, _) in zip(items, prices) if where == sid] for sid in (first, second)}
+    oracle = []
+    for sid in (first, second):  # one order per store: the checkout prices the cart at one pickup store
+        oracle += [c for product, size in at[sid] for c in buy_oracle(product, size, ctx.stores[sid])[:4]]
+        oracle += [call("browser_goto", url=site_url("shop", "/checkout")),
+                   call("browser_click", element=ref("button", "Place order"))]
+    legs = [ctx.walk(start, first), ctx.world.directions(ctx.store_places[first].node, ctx.store_places[second].node)]
+    nodes = [*legs[0].nodes, *legs[1].nodes[1:]]
+    oracle += [call("browser_goto", url=site_url("map", "/directions", **{"from": start.name, "to": first})),
+               call("browser_goto", url=site_url("map", "/directions", **{"from": first, "to": second})),
+               call("switch_environment", target="embodied", message="walk past the first store to the second"),
+               *[call("street_move", neighbour=x) for x in nodes[1:]], call("street_stop"), call("finish_episode")]
+    places = [ctx.store_places[first], ctx.store_places[second]]
+    ends = [ctx.world.node(p.node) for p in places]
+    links = ctx.world.neighbours(start.node)
+    return Task(
+        id=f"shopping-pair-{n:03d}", domain="shopping", difficulty="hard", intent=intent,
+        start=StartState(environment="web", web=WebStart(start_url="shop:/"),
+                         embodied=StreetStart(city="manhattan", node=start.node,
+                                              heading=round(rng.choice([lk.heading for lk in links]), 1))),
+        web_goals=[OrdersSplit(items=[ItemRef(product_id=p.id, size=size) for p, size in items],
+                               store_ids=[first, second], max_total=budget)],
+        embodied_goals=[PassedPlace(city="manhattan", node=places[0].node, lat=ends[0].lat, lng=ends[0].lng,
+                                    place_id=first),
+                        ReachedPlace(city="manhattan", node=places[1].node, lat=ends[1].lat, lng=ends[1].lng,
+                                     place_id=second, must_match_order_store=True)],
+        step_limit=step_budget("shopping", "hard", len(oracle)),
+        oracle=oracle,
+        metadata={"form": "split", "store_nodes": {sid: p.node for sid, p in ctx.store_places.items()},
+                  "shortest_path_m": round(route[(first, second)], 1), "start_lat": ctx.world.node(start.node).lat,
+                  "start_lng": ctx.world.node(start.node).lng, "products": [p.id for p, _ in items],
+                  "sizes": [size for _, size in items], "store_pair": [first, second], "budget": budget,
+                  "pair_costs": costs, "reverse_path_m": round(route[(second, first)], 1),
+                  "shortcuts": shortcuts},
+    )
+
+
 def pair_tasks(ctx: Context) -> list[Task]:
-    """Hard by composition (issue 26, principle 6): three products bought together in one order at one pickup
-    store, within a budget for the three, at the nearest store that can sell all three within it. Each part
-    decides: the nearest store with all three in stock is over the budget; the store where the three cost
-    least together is farther than the answer; the items' cheapest stores are not all one store, and none
-    of them is the answer. The agent must read three prices at every store, add them, check the budget and
-    the stock, and compare walks; every number it needs is on the product pages and the map (the checkout
-    shows one chosen store's total at a time). Ids keep the family's name, ``shopping-pair-*``."""
+    """Hard by composition (issue 26, principle 6), in two forms over a seeded shuffle of the ids. 18 of the
+    60 name three stores (``NAMED_TASKS``): three products bought together in one order at one pickup store,
+    the one of the three that has all three in stock within a budget for the three (``named_draw``). The other
+    42 are the split form (``split_tasks``): a list no single store has in stock, two orders at two stores
+    within one budget, on the shortest walk past one store to the other. Every number the agent needs is on
+    the product pages and the map (the checkout shows one chosen store's total at a time). Ids keep the
+    family's name, ``shopping-pair-*``."""
     out: list[Task] = []
     rng = rng_for("shopping", "pair")
     counts = ctx.store_counts()
 
-    want: dict[str, Any] = {"named": False, "rank": 0, "rank_all": 0, "kinds": RIVAL_KINDS[0], "position": 0}
+    want: dict[str, Any] = {"rank": 0, "rank_all": 0, "kinds": RIVAL_KINDS[0], "position": 0}
 
     def rank_among_all(start: Any, store_id: str) -> int:
         return sorted(ctx.stores, key=lambda sid: ctx.walk(start, sid).distance_m).index(store_id)
@@ -456,35 +669,11 @@ def pair_tasks(ctx: Context) -> list[Task]:
         cheapest_each = {catalog.cheapest_store(p.id, size) for p, size in items}
         if len(cheapest_each) < 2:
             return None  # one store cheapest for every item would answer "cheapest" item by item
-        if want["named"]:
-            return named_draw(items, start, totals, stocked, cheapest_each)
-        for k in range(1, len(stocked)):  # never the nearest store with all three: the budget must decide
-            answer = stocked[k]
-            nearer = [totals[sid] for sid in stocked[:k]]
-            budget = pair_budget(totals[answer], nearer)  # type: ignore[arg-type]
-            if budget is None:
-                continue
-            within = [sid for sid in stocked if totals[sid] <= budget]  # type: ignore[operator]
-            farther = [sid for sid in within if sid != answer]
-            if not farther or ctx.nearest(start, within) != answer:
-                return None  # distance must decide among the stores within the budget, by 100 m or more
-            cheapest_basket = min(within, key=lambda sid: totals[sid])  # type: ignore[arg-type,return-value]
-            if cheapest_basket == answer or any(abs(totals[s] - totals[cheapest_basket]) < PAIR_MARGIN  # type: ignore[operator]
-                                                for s in within if s != cheapest_basket):
-                return None  # "cheapest for the three" must point elsewhere, unambiguously
-            if answer in cheapest_each:
-                return None  # no item's cheapest store is the answer
-            # The answer's place among all the stores by distance alternates (second or third nearest: the
-            # nearest with all three is over the budget and a farther one is within it), so no distance
-            # rank answers most tasks.
-            if rank_among_all(start, answer) != want["rank_all"]:
-                return None
-            return items, start, answer, budget, totals, None
-        return None
+        return named_draw(items, start, totals, stocked, cheapest_each)
 
     def named_draw(items: list[tuple[Any, str]], start: Any, totals: dict[str, float | None],
                    stocked: list[str], cheapest_each: set[str]) -> Any:
-        """The other form: three stores named, one of which has all three in stock and sells them within the
+        """Three stores named, one of which has all three in stock and sells them within the
         budget. Each rival fails by one thing: stock (it lists all three, one is sold out there, and the three
         cost less there than at the answer) or the budget (all three in stock, over it by a margin). The kinds
         of failure and the answer's place by distance among the three are cycled over the tasks, so that
@@ -496,7 +685,7 @@ def pair_tasks(ctx: Context) -> list[Task]:
         choices = [sid for sid in stocked if sid not in cheapest_each]
         if not choices:
             return None
-        # The least used store so far: the other form's answers gather at two stores (prices favour them).
+        # The least used store so far: prices favour some stores, which would gather the answers there.
         answer: str = min(rng.sample(choices, len(choices)), key=lambda sid: counts[sid])
         total = totals[answer]
         assert total is not None
@@ -526,17 +715,18 @@ def pair_tasks(ctx: Context) -> list[Task]:
     # the task numbers: any pattern in the ids (every eighth task named, cells in id order) lets tasks some
     # ids apart agree on the answer (tests/core/test_id_order.py).
     order = rng_for("shopping-pair-forms").sample(range(PER_TEMPLATE), PER_TEMPLATE)
-    named_ids = set(order[: PER_TEMPLATE // 2])
+    named_ids = set(order[:NAMED_TASKS])
     cells = {m: i for i, m in enumerate(m for m in order if m in named_ids)}
-    cells.update({m: i for i, m in enumerate(m for m in order if m not in named_ids)})
+    split = split_tasks(ctx, [m for m in order if m not in named_ids])  # in the shuffle's order: its cells
     for n in slots(out):
-        # Half the tasks name three stores, the others ask for the nearest within the budget. The named tasks
-        # cycle through every pair of (answer's distance rank, rivals' failures); the others alternate the
-        # answer's distance rank among all four stores (second, third), which that form cannot make first or
-        # last, so the named form makes it first or last as often as it can (NAMED_RANKS).
-        want["named"] = n in named_ids
+        # 18 tasks name three stores, the others are the split form. The named tasks cycle through every
+        # pair of (answer's distance rank, rivals' failures), the answer's rank among all four stores spread
+        # over all four (NAMED_RANKS).
+        if n not in named_ids:
+            out.append(split[n])
+            continue
         cell = cells[n]
-        want["rank"], want["rank_all"] = NAMED_RANKS[cell % 6] if want["named"] else (1 + cell % 2, 1 + cell % 2)
+        want["rank"], want["rank_all"] = NAMED_RANKS[cell % 6]
         want["kinds"] = RIVAL_KINDS[(cell % 3 + cell // 3) % 3]
         want["position"] = (cell // 2) % 3
         picked = balanced(draw, lambda c: c[2], counts, tries=PAIR_TRIES)  # the pickup store spreads over the stores
@@ -547,16 +737,10 @@ def pair_tasks(ctx: Context) -> list[Task]:
         route, place = ctx.walk(start, store_id), ctx.store_places[store_id]
         node = ctx.world.node(place.node)
         money = f"${budget:.2f}"
-        if named is None:
-            intent = (f"Buy me {_listing(items)} together, in one order for pickup at one store, spending at "
-                      f"most {money} on the three. Of the stores where all three are in stock and cost {money} "
-                      f"or less together, pick the one nearest to {start.name} on foot; then walk there from "
-                      f"{start.name} to pick them up. {WALK_RULE}")
-        else:
-            first, second, third = (ctx.stores[sid].name for sid in named)
-            intent = (f"Buy me {_listing(items)} together, in one order for pickup at {first}, {second} or "
-                      f"{third}: whichever of the three has all three items in stock and sells them for {money} "
-                      f"or less in all. Then walk there from {start.name} to pick them up. {WALK_RULE}")
+        first, second, third = (ctx.stores[sid].name for sid in named)
+        intent = (f"Buy me {_listing(items)} together, in one order for pickup at {first}, {second} or "
+                  f"{third}: whichever of the three has all three items in stock and sells them for {money} "
+                  f"or less in all. Then walk there from {start.name} to pick them up. {WALK_RULE}")
         if any(t.intent == intent for t in out):
             counts[store_id] -= 1
             continue  # the same question twice
@@ -578,7 +762,7 @@ def pair_tasks(ctx: Context) -> list[Task]:
                                          place_id=store_id, must_match_order_store=True)],
             step_limit=step_budget("shopping", "hard", len(oracle)),
             oracle=oracle,
-            metadata={"store_nodes": {sid: p.node for sid, p in ctx.store_places.items()},
+            metadata={"form": "named", "store_nodes": {sid: p.node for sid, p in ctx.store_places.items()},
                       "shortest_path_m": route.distance_m, "start_lat": ctx.world.node(start.node).lat,
                       "start_lng": ctx.world.node(start.node).lng, "products": [p.id for p, _ in items],
                       "sizes": [size for _, size in items], "store_id": store_id, "budget": budget,
