@@ -334,3 +334,21 @@ def test_split_shortcuts_pick_the_target_pair_in_a_third_or_less() -> None:
     for rule in ("pair holding the nearest store", "cheapest pair", "greedy walk", "straight sum"):
         assert hits[rule] <= 0.34 * len(SPLIT), f"{rule}: {hits[rule]} of {len(SPLIT)}"
     assert len(set(targets)) == 6 and _share(targets) <= 0.34, Counter(targets)
+
+
+def test_a_list_whose_product_name_holds_a_comma_reads_as_its_items() -> None:
+    """"Fluoride Toothpaste, Fresh Mint" in a comma list read as two items (a play-tester counted four of
+    three): such a list is separated by semicolons, and every item is named whole with its size."""
+    checked = 0
+    for task in TASKS:
+        meta = task["metadata"]
+        if "products" not in meta:
+            continue
+        names = [catalog.get_product(p).name for p in meta["products"]]
+        named = [f"{name} ({size})" for name, size in zip(names, meta["sizes"], strict=True)]
+        assert all(item in task["intent"] for item in named), task["id"]
+        if any("," in name for name in names):
+            checked += 1
+            listing = "; ".join(named[:-1]) + "; and " + named[-1]
+            assert listing in task["intent"], task["id"]
+    assert checked > 0

@@ -430,9 +430,11 @@ def pair_budget(total: float, over: list[float]) -> float | None:
 
 
 def _listing(items: list[tuple[Any, str]]) -> str:
-    """ "A (s), B (s) and C (s)" as the intent names them."""
+    """ "A (s), B (s) and C (s)" as the intent names them; with semicolons where a name holds a comma
+    ("Fluoride Toothpaste, Fresh Mint" read as two items in a comma list)."""
     named = [f"{p.name} ({size})" for p, size in items]
-    return ", ".join(named[:-1]) + " and " + named[-1]
+    sep = "; " if any("," in p.name for p, _ in items) else ", "
+    return sep.join(named[:-1]) + (";" if sep == "; " else "") + " and " + named[-1]
 
 
 # The split form of the hard pair tasks (issue 26, principle 6): a list no single store has in stock, bought in
