@@ -225,12 +225,7 @@ def year_order_tasks(world: Any, resolver: WorldAdapter, city: str, places: list
             intent=task_rng.choice(STOPS_TEMPLATES).format(origin=describe(origin), stops=stops),
             start=start_state(world, city, origin, task_rng),
             web_goals=[PageVisited(site="wiki", path_prefix=f"/wiki/{article_slug(p)}") for p in order],
-            # each stop passed after the one before it (a chain), the walk ending at the newest
-            embodied_goals=[*[PassedPlace(city=city, node=p.node, lat=world.node(p.node).lat,
-                                          lng=world.node(p.node).lng, place_id=p.id,
-                                          after=waypoint(world, order[k - 1]) if k else None)
-                              for k, p in enumerate(order[:-1])],
-                            reached(world, city, order[-1])],
+            embodied_goals=chain_goals(world, city, order),  # the walk ending at the newest
             step_limit=step_budget("navigation", "hard", len(oracle)),
             oracle=oracle,
             metadata={"shortest_path_m": round(total, 1), "start_lat": world.node(origin.node).lat,
