@@ -23,7 +23,7 @@ from ewa_mcp.envs.geo.styles import TREE_WORDS, vehicle_look
 from ewa_mcp.envs.geo.graph import build_graph
 from ewa_mcp.envs.geo.locations import LOCATIONS, LOCATIONS_LIST
 from ewa_mcp.envs.geo.view_images import render_png, render_view
-from ewa_mcp.envs.geo.scene import compose_view
+from ewa_mcp.envs.geo.scene import compose_view, deciding_city_cues
 from ewa_mcp.envs.geo.seeding import rng_for
 
 STANDPOINTS = ("p0", "p1", "p2", "p3", "p4")
@@ -145,12 +145,12 @@ def test_landmark_views_describe_the_landmark():
 def _deciding_city_cues(loc, spec, text) -> list[str]:
     """The city-deciding cues a view shows (and its text quotes): an area-coded telephone number,
     a legible regional number plate."""
-    found = []
-    if "{a}" in loc.country.phone:
-        found += [f"phone {s.phone}" for s in spec.shops if s.phone and f"'{s.phone}'" in text]
-    found += [f"plate {v.plate.text}" for v in spec.vehicles
-              if v.plate and v.plate.text and v.plate.style.has_region and v.plate.text in text]
-    return found
+    # The scene's own list (what the baseline grades the city by), kept only where the text quotes it.
+    def quoted(cue: str) -> str:
+        kind, _, value = cue.partition(" ")  # "phone 0131 …" is quoted in the text, "plate …" is not
+        return f"'{value}'" if kind == "phone" else value
+
+    return [cue for cue in deciding_city_cues(loc, spec) if quoted(cue) in text]
 
 
 def _transport_shown(spec, text) -> list[str]:
