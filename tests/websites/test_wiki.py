@@ -79,6 +79,17 @@ def test_article_page_renders_infobox_body_links_and_category(client):
     assert "[[" not in html and "**" not in html
 
 
+def test_an_infobox_value_links_only_to_an_article_it_names_as_written(client):
+    html = get(client, "/wiki/japan").text
+    # The capital is an article's title; the internet domain ".jp" only shares a lookup key with an
+    # alias ("JP", Jamaica Plain) once punctuation is dropped, and must stay plain text.
+    assert '<a href="/wiki/tokyo"' in html
+    assert '<th scope="row">Internet domain</th><td>.jp</td>' in html
+    assert "/wiki/jamaica-plain" not in html
+    # Accents still fold: "Bogota" as written links to the article titled "Bogotá".
+    assert '<a href="/wiki/bogota"' in get(client, "/wiki/colombia").text
+
+
 def test_every_internal_link_on_a_rich_page_leads_somewhere(client):
     html = get(client, "/wiki/new-york-city").text
     targets = {h for h in hrefs(html) if h.startswith(("/wiki/", "/category/"))}

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import hashlib
 import threading
+import unicodedata
 from pathlib import Path
 from typing import Any
 from urllib.parse import quote
@@ -176,11 +177,19 @@ def _int_param(request: Request, name: str, default: int, maximum: int) -> int:
     return int(raw)
 
 
+def _words_key(text: str) -> str:
+    """Case and accents folded and spaces collapsed; punctuation kept."""
+    decomposed = unicodedata.normalize("NFKD", text)
+    return " ".join("".join(c for c in decomposed if not unicodedata.combining(c)).casefold().split())
+
+
 def _infobox_value(value: str, wiki: ArticleIndex, resolve: Any) -> str:
     """Infobox values stay exactly as written (graders compare them with POI facts); a value that is
-    itself the title of an article (a style, an architect) becomes a link to it."""
+    itself the title or an alias of an article (a style, an architect) becomes a link to it. The match is
+    on the words as written, not on the lookup key alone: the key drops punctuation, so an internet domain
+    ".jp" would otherwise link to the article whose alias is "JP"."""
     if "[[" not in value:
         target = wiki.find(value)
-        if target is not None:
+        if target is not None and _words_key(value) in {_words_key(n) for n in (target.title, *target.aliases)}:
             value = f"[[{target.title}|{value}]]"
     return render_inline(value, resolve)
