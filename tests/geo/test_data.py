@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import filecmp
 import json
+import re
 from collections import Counter
 
 from ewa_mcp.websites.wiki import store
@@ -11,6 +12,7 @@ from ewa_mcp.websites.wiki import store
 from ewa_mcp.envs.geo import gazetteer
 from ewa_mcp.envs.geo.articles import country_title, write_articles
 from ewa_mcp.envs.geo.cities import CITIES
+from ewa_mcp.envs.geo.rival_cities import RIVAL_CITIES_LIST
 from ewa_mcp.envs.geo.countries import COUNTRIES
 from ewa_mcp.envs.geo.taskgen.geolocation import FILE_NAMES, build_task, generate_tasks
 from ewa_mcp.geometry import haversine_km
@@ -113,3 +115,16 @@ def test_committed_articles_are_current(tmp_path):
     for path in out.glob("*.md"):
         assert filecmp.cmp(path, committed / path.name, shallow=False), (
             f"{path.name} is stale; run python -m ewa_mcp.envs.geo.articles")
+
+
+def test_a_city_article_names_only_the_sign_languages_its_views_show():
+    # Yogyakarta's article said its street signs also show Javanese script while every view showed Indonesian
+    # in Latin letters only, and a play-tester ruled the right city out on it: the article's words about signs
+    # must agree with the languages the views draw (the city's own, else its country's).
+    every_name = {lang.name for lang in LANGUAGES.values()}
+    for city in [*CITIES.values(), *RIVAL_CITIES_LIST]:
+        shown = {LANGUAGES[code].name for code in (city.langs or COUNTRIES[city.iso].langs)}
+        named = {m.group(1) for m in re.finditer(r"([A-Z][a-z]+) script", city.about)}
+        if "sign" in city.about:
+            named |= {name for name in every_name if re.search(rf"\b{name}\b", city.about)}
+        assert named <= shown, (city.name, named - shown, city.about)

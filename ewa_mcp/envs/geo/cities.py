@@ -262,7 +262,7 @@ CITIES_LIST: list[City] = [
       transport=("motorbikes",), about="Capital of Indonesia; plates start with B, area code 021."),
     _("yogyakarta", 1621177, "Yogyakarta", "ID", "tropical", "0274", "AB", aliases=("Jogja", "Jogjakarta", "Yogya"),
       transport=("becak", "motorbikes"),
-      about="Javanese cultural capital; street signs also show Javanese script. Plates AB, area code 0274."),
+      about="Javanese cultural capital. Plates AB, area code 0274."),
     _("manila", 1701668, "Manila", "PH", "tropical", "2", aliases=("Maynila",), transport=("jeepney",),
       about="Capital of the Philippines; jeepneys fill the streets. Area code 02."),
     _("mumbai", 1275339, "Mumbai", "IN", "tropical", "22", "MH 01", aliases=("Bombay",),
