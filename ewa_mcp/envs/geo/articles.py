@@ -26,6 +26,7 @@ from pathlib import Path
 
 from . import gazetteer
 from .cities import CITIES, City
+from .climates import CLIMATE_ARTICLES
 from .countries import COUNTRIES, Country
 from .languages import language
 from .locations import LOCATIONS_LIST, Location
@@ -176,6 +177,18 @@ def country_article(country: Country, cities: list[City], names: dict[str, str],
     return _front_matter(title, "Countries", aliases, infobox) + "\n" + "\n\n".join(_paragraphs(body)) + "\n"
 
 
+def climate_article(key: str, cities: list[City], aliases: list[str]) -> str:
+    """A climate's article: how its weather looks overhead (``climates.py``) and the cities that have it."""
+    art = CLIMATE_ARTICLES[key]
+    body = [f"A **{art.title[0].lower() + art.title[1:]}** is one of the climates the wiki's city articles name.",
+            "## What the weather looks like", art.overhead, "## Seasons", art.seasons]
+    if cities:
+        body.append("## Cities with this climate")
+        body += [f"- [[{city.name}]]" for city in sorted(cities, key=lambda c: c.name)]
+    return _front_matter(art.title, "Climates", aliases, {"Seasons": art.seasons}) + "\n" \
+        + "\n\n".join(_paragraphs(body)) + "\n"
+
+
 def _paragraphs(lines: list[str]) -> list[str]:
     """Join consecutive list items into one block; other lines are paragraphs of their own."""
     blocks: list[str] = []
@@ -318,7 +331,8 @@ def _city_sections(city: City, locations: list[Location]) -> list[str]:
     body.append(f"- Architecture: {architecture_words(arch)}.")
     trees = city.trees or climate.trees
     body.append("- Street trees: " + ", ".join(TREE_NAMES[t] for t in trees) + ".")
-    body.append(f"- Climate: {CLIMATE_WORDS[city.climate]}.")
+    name, _, seasons = CLIMATE_WORDS[city.climate].partition(":")
+    body.append(f"- Climate: [[{CLIMATE_ARTICLES[city.climate].title}|{name}]]:{seasons}.")
     for feature in city.transport:
         kind, _, colour = feature.partition(":")
         body.append("- Often seen: " + vehicle_name(kind, colour) + ".")
@@ -380,6 +394,8 @@ def write_articles(out_dir: Path, articles_root: Path | None = None) -> int:
     for title in [CITIES[key].name for key in by_city] + [city.name for city in rivals]:
         if _key(title) not in planned:
             planned[_key(title)] = title
+    for art in CLIMATE_ARTICLES.values():
+        planned[_key(art.title)] = art.title
     names = dict(planned)
     names.update({t: t for t in taken_titles})
     blocked = set(names) | taken_aliases
@@ -428,6 +444,14 @@ def write_articles(out_dir: Path, articles_root: Path | None = None) -> int:
             raise ValueError(f"rival city {city.name} already has an article outside the geo group, which would "
                              f"not state its conventions: pick another city in rival_cities.py")
         files[slugify(city.name)] = city_article(city, [], free_aliases(city.aliases, city.name))
+    by_climate: dict[str, list[City]] = defaultdict(list)
+    for city in [CITIES[key] for key in by_city] + rivals:
+        by_climate[city.climate].append(city)
+    for key, art in CLIMATE_ARTICLES.items():
+        if _key(art.title) in taken_titles:
+            raise ValueError(f"the climate article {art.title} already exists outside the geo group; rename it "
+                             "in climates.py")
+        files[slugify(art.title)] = climate_article(key, by_climate.get(key, []), free_aliases(art.aliases, art.title))
     for path in out_dir.glob("*.md"):
         if path.stem not in files:
             path.unlink()  # a location set that shrank leaves no stale articles behind
