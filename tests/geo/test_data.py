@@ -128,3 +128,20 @@ def test_a_city_article_names_only_the_sign_languages_its_views_show():
         if "sign" in city.about:
             named |= {name for name in every_name if re.search(rf"\b{name}\b", city.about)}
         assert named <= shown, (city.name, named - shown, city.about)
+
+
+def test_every_city_article_links_its_climate_to_an_article_that_lists_the_city():
+    # A view shows the climate as its sky; the climate article says how that climate's weather looks, so an
+    # agent telling two cities apart by the sky reads the link in the wiki rather than guessing it.
+    index = store.index()
+    for city in [*CITIES.values(), *RIVAL_CITIES_LIST]:
+        article = index.find(city.name)
+        assert article is not None, city.name
+        if article.group != "geo" or article.category != "Cities":
+            continue  # a city-state's country article, or an article of the street world's own
+        link = re.search(r"- Climate: \[\[([^]|]+)\|", article.body)
+        assert link is not None, city.name
+        climate = index.find(link.group(1))
+        assert climate is not None and climate.category == "Climates", (city.name, link.group(1))
+        assert f"[[{city.name}]]" in climate.body, (city.name, climate.title)
+        assert "## What the weather looks like" in climate.body
