@@ -28,3 +28,22 @@ def test_the_intents_description_words_rarely_find_the_landmark_first():
         if hits and hits[0].slug == task["metadata"]["article"]:
             first.append(task["id"])
     assert len(first) <= 0.1 * len(tasks), f"the look's words find the landmark first in {first}"
+
+
+def test_no_place_is_described_by_its_own_architectural_style():
+    # What a passer-by sees ("a red-brick hall with white trim") and what the article files it under
+    # ("Georgian") are different words: a view that names the style hands over the fact a style task asks
+    # the agent to look up (a play-tester read "georgian" off a hall on the street).
+    import re
+
+    from ewa_mcp.envs.street.world import get_world
+
+    world = get_world()
+    named = []
+    for poi in world.places.values():
+        style = re.sub(r"\([^)]*\)", " ", str(poi.facts.get("architectural_style") or ""))
+        look = poi.description_hint or ""
+        for word in re.findall(r"[A-Za-z]{4,}", style):
+            if word.lower() not in {"style", "revival", "architecture"} and re.search(rf"\b{word}", look, re.I):
+                named.append((poi.name, word))
+    assert not named, f"descriptions name their own style: {named}"
