@@ -8,7 +8,7 @@ from __future__ import annotations
 from ewa_mcp.core.paths import tasks_dir
 from ewa_mcp.core.taskmodel import DomainGoal, TaskStore
 from ewa_mcp.envs.kitchen import checks
-from ewa_mcp.envs.kitchen.taskgen.outcomes import grade_kitchen, recipe_outcome
+from ewa_mcp.envs.kitchen.taskgen.outcomes import audit, grade_kitchen, recipe_outcome
 from ewa_mcp.envs.kitchen.taskgen.recipe_goals import PIECE_SOURCE, goals_from_ops, recipe_ops
 from ewa_mcp.websites.recipes.catalog import load_catalog
 
@@ -119,3 +119,14 @@ def test_every_cooking_task_asks_for_pieces_where_its_recipe_cooks_pieces():
             checked += 1
             assert (getattr(goal, "as_piece", None) is True) == (goal.object_type in as_pieces), (task.id, goal)
     assert checked > 1000
+
+
+def test_the_audit_on_a_sample_cooking_whole_what_the_recipe_cuts_first_fails():
+    """Every 20th single-dish task (the full audit: python -m ewa_mcp.envs.kitchen.taskgen.outcomes): the
+    oracle passes, and the recipe done with each cut-then-cooked food cooked whole first fails."""
+    tasks = sorted((t for t in TaskStore([tasks_dir()]).all()
+                    if t.domain == "cooking" and t.metadata.get("form") != "two_dishes"), key=lambda t: t.id)
+    counts = audit(tasks[::20])
+    assert counts["oracle_fails"] == []
+    assert counts["whole_first_passes"] == []
+    assert counts["whole_first_played"] >= 20
