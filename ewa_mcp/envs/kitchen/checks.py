@@ -167,20 +167,48 @@ def check_cooked_with(goal: Any, objects: list[Obj]) -> ConditionResult:
         return ConditionResult(side="embodied", kind=kind, description="cooked_with (malformed)", met=None,
                                note="a cooked_with goal needs object_type (a type) and methods (a list of "
                                     f"{', '.join(COOK_METHODS)})")
+    # Optional: True, cooked as pieces (cut or cracked first, then cooked: a whole egg fried and then cracked
+    # fails); False, cooked whole (cut only afterwards, if at all). Absent: either.
+    as_piece = _field(goal, "as_piece")
+    if as_piece is not None and not isinstance(as_piece, bool):
+        return ConditionResult(side="embodied", kind=kind, description="cooked_with (malformed)", met=None,
+                               note="cooked_with's as_piece is true (cut first, then cooked) or false (cooked whole)")
+    piece_word = PIECE_WORD.get(object_type, "pieces")
     description = f"{object_type} cooked in {' or '.join(methods)}"
+    if as_piece is not None:
+        description += f" ({piece_word} cooked as such)" if as_piece else " (cooked whole)"
     found = instances(objects, object_type)
     if not found:
         return ConditionResult(side="embodied", kind=kind, description=description, met=False,
                                note=f"no {object_type} in the kitchen")
     cooked = [o for o in found if o.get("isCooked") is True]
-    good = [o for o in cooked if o.get("cookedBy") in methods]
+    right_way = [o for o in cooked if o.get("cookedBy") in methods]
+    good = [o for o in right_way if as_piece is None or _cooked_as_piece(o) == as_piece]
     how = sorted({str(o.get("cookedBy", "unknown")) for o in cooked})
     note = None
-    if cooked and not good:
+    if cooked and not right_way:
         note = (f"{object_type} is cooked, but by {', '.join(how)}, not in {' or '.join(methods)}"
                 + (" (the instant cook never meets a method goal)" if "CookObject" in how else ""))
+    elif right_way and not good:
+        note = (f"{object_type} was cooked whole and cut afterwards: the recipe cuts (cracks) it first and cooks the "
+                f"{piece_word}" if as_piece else
+                f"{object_type} was cut before it was cooked: the recipe cooks it whole")
+    detail: dict[str, Any] = {"instances": len(found), "cooked_by": how}
+    if as_piece is not None:
+        detail["cooked_as_piece"] = sorted({_cooked_as_piece(o) for o in right_way})
     return ConditionResult(side="embodied", kind=kind, description=description, met=bool(good),
-                           detail={"instances": len(found), "cooked_by": how}, note=note)
+                           detail=detail, note=note)
+
+
+# What the pieces of a food are called in a note ("the recipe cracks it first and cooks the cracked egg").
+PIECE_WORD = {"Egg": "cracked egg", "Bread": "slices", "Potato": "slices", "Tomato": "slices",
+              "Apple": "slices", "Lettuce": "pieces"}
+
+
+def _cooked_as_piece(obj: Obj) -> bool:
+    """A piece cooked after it was cut (not one that inherited its cooking from the whole food: the final
+    state marks those ``cookedWhole``)."""
+    return is_piece(obj) and obj.get("cookedWhole") is not True
 
 
 def check_holds_only(goal: Any, objects: list[Obj]) -> ConditionResult:

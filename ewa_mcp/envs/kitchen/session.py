@@ -96,6 +96,9 @@ class KitchenSession:
         # objectId -> how it got cooked ("Pan", "Pot", "StoveBurner", "Microwave", "Toaster", or "CookObject" for
         # the instant action): a method goal ("fried in the pan") reads it from the final state's cookedBy.
         self.cooked_by: dict[str, str] = {}
+        # pieces whose cooking came from the whole food they were cut from (cooked whole, then sliced or
+        # cracked): the final state's cookedWhole, so a method goal can tell "crack, then fry" from the reverse
+        self.cooked_whole: set[str] = set()
 
     # ------------------------------------------------------------------ lifecycle
     def reset(self) -> None:
@@ -113,6 +116,7 @@ class KitchenSession:
         self._counters.clear()
         self.deliveries.clear()
         self.cooked_by.clear()
+        self.cooked_whole.clear()
         self._events_seen = 0
         self._pending_notes.clear()
         self.last_report = None
@@ -281,6 +285,7 @@ class KitchenSession:
             if object_id not in before:
                 if inherited is not None:
                     self.cooked_by[object_id] = inherited
+                    self.cooked_whole.add(object_id)
                 continue
             if before[object_id].get("isCooked"):
                 continue
@@ -473,6 +478,8 @@ class KitchenSession:
             record["handle"] = self.handle(obj["objectId"])
             if obj.get("isCooked") and obj["objectId"] in self.cooked_by:
                 record["cookedBy"] = self.cooked_by[obj["objectId"]]
+                if obj["objectId"] in self.cooked_whole:
+                    record["cookedWhole"] = True
             if obj["objectType"] in PIECE_OF:
                 record.setdefault("sourceType", PIECE_OF[obj["objectType"]])
             objects.append(record)

@@ -60,10 +60,27 @@ class HandActions(SimWorld):
                                f"(a {target.object_type} takes {hint})")
         if self._room(target) <= 0 and target is not self.held_from:
             raise ActionFailed(f"No valid positions to place object found: {target.object_id} is full; "
-                               "take something out first")
+                               f"{self._elsewhere(target, held)}")
         self.held = None
         self.held_from = None
         self._attach(held, target)
+
+    def _elsewhere(self, full: SimObject, held: SimObject) -> str:
+        """What to do when ``full`` has no room: the nearest receptacles of its kind (any counter for a
+        counter) that take ``held`` and have room, else take something out."""
+        kinds = {full.object_type} | ({"CounterTop", "DiningTable"} if full.object_type in SURFACE_TYPES else set())
+        ax, az = self.agent_xz()
+
+        def away(o: SimObject) -> float:
+            x, _, z = self.position(o)
+            return (x - ax) ** 2 + (z - az) ** 2
+
+        others = sorted((o for o in self.objects if o is not full and o.active and o.object_type in kinds
+                         and accepts(o.object_type, held.object_type) and self._room(o) > 0), key=away)
+        if not others:
+            return "take something out first"
+        return (f"put it on another one with room ({', '.join(o.object_id for o in others[:3])}) "
+                "or take something out first")
 
     def _a_DropHandObject(self, args: dict[str, Any]) -> None:
         held = self.held

@@ -232,8 +232,12 @@ class SimWorld:
     def _room(self, receptacle: SimObject) -> int:
         capacity = receptacle.capacity if receptacle.capacity is not None else RECEPTACLE_CAPACITY.get(
             receptacle.object_type, 8)
-        # The pieces of one sliced food lie where it lay: together they take the room of one object.
-        return capacity - len({c.source_id or c.object_id for c in receptacle.children})
+        # The pieces of one sliced food lie where it lay: together they take the room of one object. An
+        # appliance standing on a counter is not counted: the kitchen took its room off the counter's capacity
+        # when it was built (counting it too made a counter with a toaster and two items on it "full").
+        held = {c.source_id or c.object_id for c in receptacle.children
+                if not (receptacle.object_type == "CounterTop" and c.spec.category == "appliance")}
+        return capacity - len(held)
 
     def ancestors(self, obj: SimObject) -> list[SimObject]:
         chain = []

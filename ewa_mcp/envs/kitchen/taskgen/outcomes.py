@@ -6,7 +6,8 @@ recipe planner (``planner.py``) from the task's kitchen and deliveries:
 * ``recipe_outcome`` — a recipe's kitchen steps done perfectly (the oracle's, or its look-alike's);
 * ``everything_outcome`` — doing everything: every food cut (the egg cracked), every piece cooked the
   usual way (bread in the toaster, the rest in the pan on a lit burner), a piece of each on one plate,
-  the stove off.
+  the stove off;
+* ``whole_first_ops`` — the recipe with every food it cuts and then cooks cooked whole first, cut after.
 
 ``grade_kitchen`` checks a task's kitchen goals against such a state with the grader's own checks.
 """
@@ -21,7 +22,7 @@ from ewa_mcp.graders.models import ConditionResult
 from .. import checks
 from ..planner import PlanError, _parse_ops, _Planner
 from ..vocabulary import PIECE_FOR
-from .recipe_goals import FOODS
+from .recipe_goals import FOODS, PIECE_SOURCE
 
 
 def _planned(scene: str, ops: list[dict[str, Any]], delivered: list[str], stop_on_error: bool) -> Any:
@@ -80,6 +81,24 @@ def everything_ops(foods: list[str]) -> list[dict[str, Any]]:
     return ops
 
 
+def whole_first_ops(ops: list[dict[str, Any]]) -> list[dict[str, Any]] | None:
+    """The recipe done the careless way: every food it cuts (cracks) and then cooks is cooked whole first
+    and cut afterwards (the whole egg into the hot pan, cracked once cooked). None when it cooks no pieces."""
+    out = [dict(op) for op in ops]
+    changed = False
+    for op in ops:
+        if op["op"] != "cook" or op.get("object") not in PIECE_SOURCE:
+            continue
+        source = PIECE_SOURCE[op["object"]]
+        cut = next((i for i, o in enumerate(out) if o["op"] in ("slice", "crack") and o.get("object") == source), None)
+        if cut is None:
+            continue
+        out.remove(op)
+        out.insert(cut, {**op, "object": source})
+        changed = True
+    return out if changed else None
+
+
 def everything_outcome(scene: str, delivered: Sequence[str] = ()) -> dict[str, Any] | None:
     """The final state after doing everything to every food in the kitchen (and the delivered ones)."""
     return _run(scene, everything_ops(kitchen_foods(scene, delivered)), list(delivered), stop_on_error=False)
@@ -104,9 +123,9 @@ def grade_kitchen(goals: list[Any], state: dict[str, Any]) -> list[ConditionResu
 
 
 def audit(tasks: list[Any], fresh_goals: bool = False) -> dict[str, Any]:
-    """For each cooking task: does the oracle's outcome meet every kitchen goal, and do the look-alike's
-    and doing everything fail at least one? ``fresh_goals`` grades the goals the generator would write now
-    instead of the task file's."""
+    """For each cooking task: does the oracle's outcome meet every kitchen goal, and do the look-alike's,
+    doing everything and cooking whole what the recipe cuts first each fail at least one? ``fresh_goals``
+    grades the goals the generator would write now instead of the task file's."""
     from ewa_mcp.websites.recipes.catalog import load_catalog
 
     from .cooking import kitchen_goals
@@ -116,7 +135,8 @@ def audit(tasks: list[Any], fresh_goals: bool = False) -> dict[str, Any]:
     by_id = {r["id"]: r for r in catalog.recipes}
     counts: dict[str, Any] = {"tasks": 0, "oracle_fails": [], "lookalike_tasks": 0, "lookalike_passes": [], "lookalike_not_doable": 0,
               "lookalike_same_kitchen": 0,
-              "everything_passes": []}
+              "everything_passes": [], "whole_first_played": 0, "whole_first_not_doable": 0,
+              "whole_first_passes": []}
     for task in tasks:
         meta = task.metadata
         if meta.get("form") == "two_dishes":
@@ -147,6 +167,15 @@ def audit(tasks: list[Any], fresh_goals: bool = False) -> dict[str, Any]:
         everything = everything_outcome(scene, delivered)
         if everything is not None and all(r.met for r in grade_kitchen(goals, everything)):
             counts["everything_passes"].append(task.id)
+        careless = whole_first_ops(recipe_ops(recipe))
+        if careless is not None:
+            state = recipe_outcome(scene, careless, delivered)
+            if state is None:
+                counts["whole_first_not_doable"] += 1  # e.g. a whole loaf does not fit the toaster
+            else:
+                counts["whole_first_played"] += 1
+                if all(r.met for r in grade_kitchen(goals, state)):
+                    counts["whole_first_passes"].append(task.id)
     return counts
 
 

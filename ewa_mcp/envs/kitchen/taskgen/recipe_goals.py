@@ -39,7 +39,9 @@ def telling_goals(ops: list[dict[str, Any]], untouched: Sequence[str] = ()) -> l
     """The conditions that fail for a look-alike's outcome and for doing everything (issue 26):
 
     - the method, for every cook op: toasted in the Toaster, cooked in the Microwave, cooked in the Pan
-      (or Pot) the step names on a lit burner; the instant CookObject never meets these;
+      (or Pot) the step names on a lit burner; the instant CookObject never meets these; and where the
+      recipe cuts or cracks a food before it cooks it, the pieces themselves are cooked (``as_piece``):
+      a whole egg fried and then cracked, or a potato fried whole and then sliced, fails;
     - what stays as it was: a food the recipe uses but never cuts stays whole, one it never cooks (nor
       puts where it would heat) stays raw;
     - a food only the look-alike works with (``untouched``, those in the kitchen) stays whole and raw;
@@ -51,6 +53,7 @@ def telling_goals(ops: list[dict[str, Any]], untouched: Sequence[str] = ()) -> l
     cooked: set[str] = set()
     heated: set[str] = set()
     methods: dict[str, list[str]] = {}
+    cooked_as_piece: set[str] = set()  # foods the recipe cuts (cracks) first and then cooks as pieces
     last_put: dict[str, str] = {}
     ever_put: dict[str, list[str]] = {}
     stove_off = False
@@ -63,6 +66,8 @@ def telling_goals(ops: list[dict[str, Any]], untouched: Sequence[str] = ()) -> l
             cut.add(source)
         elif op["op"] == "cook":
             cooked.add(source)
+            if obj in PIECE_SOURCE:
+                cooked_as_piece.add(source)
             wanted = [op["vessel"]] if op.get("vessel") else METHOD_SOURCES.get(op.get("method", ""), [])
             if wanted:
                 methods.setdefault(source, [])
@@ -77,7 +82,9 @@ def telling_goals(ops: list[dict[str, Any]], untouched: Sequence[str] = ()) -> l
         elif op["op"] in ("toggle_on", "toggle_off") and obj in ("StoveBurner", "StoveKnob"):
             stove_off = op["op"] == "toggle_off"
     goals: list[ObjectState | DomainGoal] = [
-        DomainGoal(kind="cooked_with", object_type=source, methods=wanted) for source, wanted in methods.items()]
+        DomainGoal(kind="cooked_with", object_type=source, methods=wanted,
+                   **({"as_piece": True} if source in cooked_as_piece else {}))
+        for source, wanted in methods.items()]
     goals += [ObjectState(object_type=f, prop="isSliced", value=False) for f in used if f not in cut]
     goals += [ObjectState(object_type=f, prop="isCooked", value=False) for f in used
               if f not in cooked and f not in heated]
