@@ -119,7 +119,9 @@ def test_split_task_needs_the_pair_the_budget_and_the_order_together(store, tmp_
     # The right orders, walked the other way round (then on to E): the order of the walk is graded.
     assert not play(split_plan(task, first, second, [second, first]), tmp_path, "reversed-walk")
     # The right orders and walk, plus a third order of one item elsewhere: exactly the two orders are asked for.
-    other = next(s.id for s in shop.load_stores() if s.id not in (first, second))
+    product, size = shop.get_product(meta["products"][0]), meta["sizes"][0]
+    other = next(s.id for s in shop.load_stores() if s.id not in (first, second)  # one that can sell it
+                 and product.offer(size, s.id) is not None and shop.stock(product.id, size, s.id) > 0)
     assert not play(split_plan(task, first, second, [first, second], extra=other), tmp_path, "extra-order")
 
 
