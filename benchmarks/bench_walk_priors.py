@@ -115,7 +115,8 @@ def split_rules(store: TaskStore) -> None:
     from ewa_mcp.websites.shop import catalog
 
     stores = [s.id for s in catalog.load_stores()]
-    split = [t for t in store.all("shopping") if t.metadata.get("form") == "split"]
+    split = [t for t in store.all("shopping") if t.metadata.get("form") == "split"
+             and "end_id" not in t.metadata]  # the walk ends at the second store (end points: below)
     rules: Counter[str] = Counter()
     targets: Counter[str] = Counter()
     for t in split:
@@ -152,6 +153,26 @@ def split_rules(store: TaskStore) -> None:
     for rule, hits in rules.items():
         print(f"  {rule}: {hits} of {len(split)} ({100 * hits / n:.0f} %)")
     print("  targets: " + ", ".join(f"{k} {v}" for k, v in targets.most_common()))
+
+
+def end_point_rules(store: TaskStore) -> None:
+    """Shopping hard, the split form with an end point E (S, first store, second store, E): how often each
+    shortcut walks the graded order (the pair and its order), over the split form. The shortcuts' picks are
+    the generator's (task metadata); tests/core/test_shopping_constraints.py works them out again from the
+    catalogue and the map and checks they agree."""
+    split = [t for t in store.all("shopping") if t.metadata.get("form") == "split"]
+    ends = [t for t in split if "end_id" in t.metadata]
+    rules: Counter[str] = Counter()
+    for t in ends:
+        for rule, pick in t.metadata["shortcuts"].items():
+            rules[rule] += pick == t.metadata["store_pair"]
+    margins = sorted(t.metadata["margin_m"] for t in ends)
+    print(f"\nshopping hard, split form with an end point ({len(ends)} of {len(split)} split tasks; the answer's "
+          f"walk beats the next within the budget by {margins[0]:.0f} to {margins[-1]:.0f} m): the shortcut "
+          "walks the graded order")
+    for rule, hits in rules.items():
+        print(f"  {rule}: {hits} of {len(ends)} ({100 * hits / max(len(ends), 1):.0f} %; "
+              f"{100 * hits / max(len(split), 1):.0f} % of the split form)")
 
 
 def main() -> int:
@@ -208,6 +229,7 @@ def main() -> int:
         print(f"  {difficulty} {fam} ({n} tasks): " + ", ".join(f"{r} {h} ({100 * h / n:.0f} %)" for r, h in cell.items()))
     hard_cues(store)
     split_rules(store)
+    end_point_rules(store)
     sizes = Counter(t.difficulty or "-" for t in store.all("shopping"))
     for difficulty in ("easy", "medium", "hard"):
         rows = [c for (d, _), c in cells.items() if d == difficulty]

@@ -40,9 +40,14 @@ def store() -> TaskStore:
 
 
 def split_task(store: TaskStore) -> Task:
-    """The first hard shopping task of the split form (two orders at two stores within one budget)."""
+    """The first hard shopping task of the split form (two orders at two stores within one budget) whose walk
+    goes on to an end point E."""
     return next(t for t in sorted(store.all("shopping"), key=lambda t: t.id)
-                if t.difficulty == "hard" and t.metadata["form"] == "split")
+                if t.difficulty == "hard" and t.metadata["form"] == "split" and "end_id" in t.metadata)
+
+
+def end_node(task: Task) -> str | None:
+    return get_world().places[task.metadata["end_id"]].node if "end_id" in task.metadata else None
 
 
 def shorter_over_budget(task: Task) -> tuple[str, str]:
@@ -51,17 +56,21 @@ def shorter_over_budget(task: Task) -> tuple[str, str]:
     meta, world = task.metadata, get_world()
     start, nodes = task.start.embodied.node, meta["store_nodes"]
 
+    end = end_node(task)
+
     def walk(a: str, b: str) -> float:
-        return world.directions(start, nodes[a]).distance_m + world.directions(nodes[a], nodes[b]).distance_m
+        return world.directions(start, nodes[a]).distance_m + world.directions(nodes[a], nodes[b]).distance_m \
+            + (world.directions(nodes[b], end).distance_m if end else 0.0)
 
     ordered = [(a, b) for k in meta["pair_costs"] for a, b in (k.split("|"), k.split("|")[::-1])
                if meta["pair_costs"][k] > meta["budget"]]
     return min(ordered, key=lambda r: walk(*r))
 
 
-def split_plan(task: Task, first: str, second: str, walk: list[str]) -> Task:
+def split_plan(task: Task, first: str, second: str, walk: list[str], extra: str | None = None) -> Task:
     """Orders of the list at ``first`` and ``second`` (each item where it is cheaper of the two, as the
-    oracle does), then the walk from the start past the stores in ``walk``."""
+    oracle does), and with ``extra`` a third order of the first item at that store, then the walk from the
+    start past the stores in ``walk`` and on to the task's end point, where it has one."""
     from ewa_mcp.envs.street.taskgen.shopping import buy_oracle, split_prices
     from ewa_mcp.taskgen.common import call, ref, site_url
 
@@ -76,12 +85,17 @@ def split_plan(task: Task, first: str, second: str, walk: list[str]) -> Task:
                   for c in buy_oracle(product, size, store_obj)[:4]]
         calls += [call("browser_goto", url=site_url("shop", "/checkout")),
                   call("browser_click", element=ref("button", "Place order"))]
+    if extra is not None:
+        calls += [*buy_oracle(items[0][0], items[0][1], shop.get_store(extra))[:4],
+                  call("browser_goto", url=site_url("shop", "/checkout")),
+                  call("browser_click", element=ref("button", "Place order"))]
     calls.append(call("switch_environment", target="embodied", message="walk"))
     here = task.start.embodied.node
-    for sid in walk:
-        route = world.directions(here, meta["store_nodes"][sid])
+    end = end_node(task)
+    for node in [*(meta["store_nodes"][sid] for sid in walk), *([end] if end else [])]:
+        route = world.directions(here, node)
         calls += [call("street_move", neighbour=n) for n in route.nodes[1:]]
-        here = meta["store_nodes"][sid]
+        here = node
     calls += [call("street_stop"), call("finish_episode")]
     return task.model_copy(update={"oracle": calls})
 
@@ -96,8 +110,19 @@ def test_split_task_needs_the_pair_the_budget_and_the_order_together(store, tmp_
     assert play(split_plan(task, first, second, [first, second]), tmp_path, "same-plan-rebuilt")
     # The shorter walk's pair, over the budget: orders there fail, and so does the walk past it.
     assert not play(split_plan(task, cheap_first, cheap_second, [cheap_first, cheap_second]), tmp_path, "over-budget")
-    # The right orders, walked the other way round (ending at the first store): the order of the walk is graded.
+    # The next walk of another pair within the budget, its orders and walk right for that pair: the wrong pair.
+    meta = task.metadata
+    rival = min((tuple(k.split(">")) for k in meta["walks_m"] if set(k.split(">")) != {first, second}
+                 and meta["pair_costs"]["|".join(sorted(k.split(">")))] <= meta["budget"]),
+                key=lambda r: meta["walks_m"][">".join(r)])
+    assert not play(split_plan(task, rival[0], rival[1], list(rival)), tmp_path, "other-pair")
+    # The right orders, walked the other way round (then on to E): the order of the walk is graded.
     assert not play(split_plan(task, first, second, [second, first]), tmp_path, "reversed-walk")
+    # The right orders and walk, plus a third order of one item elsewhere: exactly the two orders are asked for.
+    product, size = shop.get_product(meta["products"][0]), meta["sizes"][0]
+    other = next(s.id for s in shop.load_stores() if s.id not in (first, second)  # one that can sell it
+                 and product.offer(size, s.id) is not None and shop.stock(product.id, size, s.id) > 0)
+    assert not play(split_plan(task, first, second, [first, second], extra=other), tmp_path, "extra-order")
 
 
 def step_told_tasks(store: TaskStore) -> list[Task]:

@@ -6,11 +6,12 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from ewa_mcp.geometry import haversine_m
 from ewa_mcp.graders.textnorm import is_number, tokens
 from ..world import get_world
 from ewa_mcp.core.taskmodel import AnswerNumbers, StartState, Task, TextAnswer
 from ewa_mcp.envs.browser.goals import ItemRef, OrderPlaced, OrdersSplit, WebStart
-from ewa_mcp.envs.street.goals import PassedPlace, ReachedPlace, StreetStart
+from ewa_mcp.envs.street.goals import PassedPlace, ReachedPlace, StreetStart, Waypoint
 from ewa_mcp.websites.shop import catalog
 from ewa_mcp.taskgen.answer_checks import CALORIES, answer_rule, committed_answer
 from ewa_mcp.taskgen.common import WALK_RULE, call, ref, rng_for, site_url, step_budget
@@ -439,18 +440,30 @@ def _listing(items: list[tuple[Any, str]]) -> str:
 
 # The split form of the hard pair tasks (issue 26, principle 6): a list no single store has in stock, bought in
 # two orders at two stores within one budget, on the shortest walk from the start past one store to the other.
-SPLIT_ITEMS = (3, 4)
-SPLIT_MAX_WALK_M = 3500.0  # the whole walk, start past the first store to the second: about 175 moves, which
+SPLIT_ITEMS = (4, 3)  # four items where the stock allows (more splits per pair to price), else three
+SPLIT_MAX_WALK_M = 3500.0  # the whole walk, start past both stores to the end point: about 175 moves, which
 # leaves the hard step budget (280) room for some 60 steps of reading prices and routes beyond the oracle's
-SPLIT_PAIR_GAP_M = 100.0  # the target walk beats every other pair within the budget by this much
+SPLIT_PLACE_TRIES = 6  # starts and end points tried for one list
+SPLIT_SINGLE_SHARE = 0.8  # of the four items, each lacking at one store: this share lack it there alone
+SPLIT_GAP_M = 40.0  # the answer's walk beats every other walk within the budget (other pairs, its own pair the
+# other way round) by at least this much: clear on the map's rounding (to 10 m)
+SPLIT_GAP_MAX_M = 150.0  # and by at most this much: close enough that estimating the sums can pick a rival
+SPLIT_END_GAP_M = 60.0  # the end point stands this far or more from both stores of the answer (straight line)
+SPLIT_PAIR_SHARE = 0.36  # no pair of stores the answer of more than this share of split tasks
+SPLIT_SHORTCUT_SHARE = 0.33  # each tempting shortcut picks the answer's walk in at most this share of split tasks
+SPLIT_PAIR_GAP_M = 100.0  # without an end point: the target walk beats every other pair within the budget by this
 SPLIT_ORDER_GAP_M = 150.0  # and its own pair visited the other way round by this much: the order is graded
-SPLIT_SHORTCUT_SHARE = 0.3  # each tempting shortcut picks the target pair in at most this share of split tasks
+SPLIT_V9_SHARE = 0.3  # and each of its shortcuts picks the target pair in at most this share of those tasks
+SPLIT_ROUNDS = 8
+SPLIT_SHORTCUTS_RIGHT = 2  # of them, at most this many pick the answer in any one task: the shares stay even
+SPLIT_POOL_DRAWS = 30000  # lists drawn (of four items, then of three) for the pool the suite is picked from
+SPLIT_SHORTCUTS = ("nearest store first", "pair nearest the start", "pair nearest the end", "cheapest pair",
+                   "end point not read", "budget not read")
 # Named-stores tasks (the rest are the split form). A store rule picks among the three stores named, right in a
 # third of them by construction (positions and ranks are cycled), and wrong in every split task: 18 of 60 keeps
 # any such rule at 10 % of the hard tasks (the issue's bar for heuristics), and six full cycles of the named
 # form's cells (NAMED_RANKS, RIVAL_KINDS, the answer's place in the sentence).
 NAMED_TASKS = 18
-SPLIT_ROUNDS = 8
 
 
 def pair_key(a: str, b: str) -> str:
@@ -482,7 +495,268 @@ def split_costs(items: list[tuple[Any, str]], store_ids: list[str]) -> dict[str,
     return costs
 
 
-def split_shortcuts(items: list[tuple[Any, str]], store_ids: list[str], from_start: dict[str, float],
+def split_shortcuts(within: list[tuple[str, str]], costs: dict[str, float], from_start: dict[str, float],
+                    to_end: dict[str, float], between: Any) -> dict[str, tuple[str, str] | None]:
+    """The walk (first store, second store) each tempting shortcut picks, or None where it picks none.
+    ``within`` is every order of visiting every pair that fills the list within the budget; ``costs`` every
+    pair that fills it at all (``pair_key``). The shortcuts: the store nearest the start first, then the
+    partner that makes the rest of the walk shortest; the pair nearest the start (sum of the two walks from
+    it), nearer store first; the pair nearest the end point, ending at the store nearer it; the cheapest
+    pair, in its shorter order; the shortest walk from the start past both stores, the end point not read
+    (the rule before the end point was added); the shortest whole walk over every pair, the budget not read."""
+    route = {(a, b): from_start[a] + between(a, b) + to_end[b] for k in costs for a, b in
+             (k.split("|"), k.split("|")[::-1])}
+    pairs = sorted({pair_key(a, b) for a, b in within})
+
+    def best_order(k: str) -> tuple[str, str]:
+        a, b = k.split("|")
+        return min(((a, b), (b, a)), key=lambda r: route[r])
+
+    out: dict[str, tuple[str, str] | None] = {name: None for name in SPLIT_SHORTCUTS}
+    if not within:
+        return out
+    nearest = min({a for a, _ in within}, key=lambda sid: from_start[sid])
+    out["nearest store first"] = min((r for r in within if r[0] == nearest),
+                                     key=lambda r: between(*r) + to_end[r[1]])
+    near_start = min(pairs, key=lambda k: sum(from_start[s] for s in k.split("|")))
+    out["pair nearest the start"] = tuple(sorted(near_start.split("|"), key=lambda s: from_start[s]))  # type: ignore[assignment]
+    near_end = min(pairs, key=lambda k: sum(to_end[s] for s in k.split("|")))
+    out["pair nearest the end"] = tuple(sorted(near_end.split("|"), key=lambda s: -to_end[s]))  # type: ignore[assignment]
+    out["cheapest pair"] = best_order(min(costs, key=lambda k: costs[k]))
+    out["end point not read"] = min(within, key=lambda r: from_start[r[0]] + between(*r))
+    out["budget not read"] = min(route, key=lambda r: route[r])
+    return out
+
+
+def _near_in_order(world: Any, nodes: list[str], first: Any, second: Any, radius: float = 25.0) -> bool:
+    """A walk along these nodes passes ``first`` and, at that moment or later, ``second`` (as the grader's
+    ``passed_place`` with ``after`` reads it)."""
+    points = [world.node(n) for n in nodes]
+    near = [[haversine_m(p.lat, p.lng, q.lat, q.lng) <= radius for p in points] for q in (first, second)]
+    at = next((i for i, hit in enumerate(near[0]) if hit), None)
+    return at is not None and any(near[1][at:])
+
+
+def split_tasks(ctx: Context, numbers: list[int]) -> dict[int, Task]:
+    """The split form for the task numbers given: four items where stock allows (else three), no store with
+    all of them in stock, so two orders at two stores; then the goods are carried to an end point E. Every
+    pair of stores that can fill the list is a candidate, priced at the cheaper store of the two for each item,
+    and each pair can be visited in two orders: up to 12 walks from the start S past the first store and the
+    second to E. The answer is the shortest whole walk among the pairs within the budget. Each part decides:
+    some walk shorter than the answer's is over the budget; the next walk within it (another pair, or the same
+    pair the other way round) is longer by SPLIT_GAP_M to SPLIT_GAP_MAX_M (clear on the map's rounding, close
+    enough that estimating can pick it); the shortcuts (``split_shortcuts``) each pick the answer's walk in at
+    most about a third of the tasks. Answers spread over the six pairs."""
+    rng = rng_for("shopping", "pair-split")
+    store_ids = list(ctx.stores)
+    between_cache: dict[tuple[str, str], float] = {}
+    to_end_cache: dict[tuple[str, str], float] = {}
+    legs_cache: dict[tuple[str, str], Any] = {}
+
+    def leg(a_node: str, b_node: str) -> Any:
+        if (a_node, b_node) not in legs_cache:
+            legs_cache[(a_node, b_node)] = ctx.world.directions(a_node, b_node)
+        return legs_cache[(a_node, b_node)]
+
+    def between(a: str, b: str) -> float:
+        if (a, b) not in between_cache:
+            between_cache[(a, b)] = leg(ctx.store_places[a].node, ctx.store_places[b].node).distance_m
+        return between_cache[(a, b)]
+
+    def to_end(end: Any, sid: str) -> float:
+        if (end.id, sid) not in to_end_cache:
+            to_end_cache[(end.id, sid)] = leg(ctx.store_places[sid].node, end.node).distance_m
+        return to_end_cache[(end.id, sid)]
+
+    pairs = {pair_key(a, b): 0 for i, a in enumerate(store_ids) for b in store_ids[i + 1:]}
+    # Items drawn by which stores lack them (sold out or not sold), each such set as likely as the next: drawn
+    # uniformly, nearly every list of three or four has a store with all of them.
+    lacking: dict[frozenset[str], list[tuple[Any, str]]] = {}
+    for product in ctx.products:
+        for size in product.sizes:
+            missing = frozenset(sid for sid in store_ids if not in_stock(product, size.label, sid))
+            if missing and len(missing) < len(store_ids):
+                lacking.setdefault(missing, []).append((product, size.label))
+    kinds = sorted(lacking, key=sorted)
+    # Any named place the walk fits from (and to): starts and ends between stores far apart are where the
+    # walks rank the pairs and orders differently from the shortcuts.
+    places = [p for p in sorted(ctx.world.places.values(), key=lambda p: p.id) if p.city == "manhattan"
+              and p.kind not in ("store", "shop", "intersection", "address") and ctx.reaches_stores(p)]
+    by_store: dict[str, list[Any]] = {}
+    by_pair: dict[str, list[Any]] = {}
+    for place in places:
+        near = {sid: ctx.walk(place, sid).distance_m for sid in store_ids}
+        by_store.setdefault(min(store_ids, key=near.__getitem__), []).append(place)
+        by_pair.setdefault(min(pairs, key=lambda k: sum(near[sid] for sid in k.split("|"))), []).append(place)
+    hits = {name: 0 for name in SPLIT_SHORTCUTS}
+    cap = int(SPLIT_SHORTCUT_SHARE * len(numbers))
+    pair_cap = int(SPLIT_PAIR_SHARE * len(numbers))
+    want = {"items": SPLIT_ITEMS[0]}
+
+    def draw() -> list[Any] | None:
+        if want["items"] == len(store_ids):
+            # One item missing at each store (most often there alone): no store fills the list, and most
+            # pairs of stores fill it between them, so up to 12 walks are candidates.
+            sets = [frozenset([sid]) if rng.random() < SPLIT_SINGLE_SHARE or not (
+                    wider := [k for k in kinds if sid in k and len(k) > 1]) else rng.choice(wider)
+                    for sid in store_ids]
+            items = [rng.choice(lacking[k]) for k in sets]
+            rng.shuffle(items)
+        else:
+            items = [rng.choice(lacking[rng.choice(kinds)]) for _ in range(want["items"])]
+        if len({p.id for p, _ in items}) < len(items):
+            return None  # one product twice
+        if any(all(in_stock(p, size, sid) for p, size in items) for sid in store_ids):
+            return None  # some store fills the list alone
+        costs = split_costs(items, store_ids)
+        found = []  # every walk that can be the answer, from every start and end point tried
+        for _ in range(SPLIT_PLACE_TRIES):  # the list is the rare part: try it from several places
+            # Starts drawn evenly by their nearest store, end points by their nearest pair of stores: drawn
+            # uniformly, most places lie nearest the central stores, and "go to the nearest" would answer.
+            start = rng.choice(by_store[rng.choice(sorted(by_store))])
+            end = rng.choice(by_pair[rng.choice(sorted(by_pair))])
+            if start.node == end.node or start.id == end.id:
+                continue
+            from_start = {sid: ctx.walk(start, sid).distance_m for sid in store_ids}
+            ends = {sid: to_end(end, sid) for sid in store_ids}
+            route = {(a, b): from_start[a] + between(a, b) + ends[b] for k in costs
+                     for a, b in (k.split("|"), k.split("|")[::-1])}
+            ranked = sorted(route, key=lambda r: route[r])
+            for at in range(1, len(ranked)):  # never the shortest walk: the budget must decide
+                target = ranked[at]
+                key = pair_key(*target)
+                if any(pair_key(*r) == key for r in ranked[:at]):
+                    continue  # its own pair the other way round is shorter
+                budget = pair_budget(costs[key], [costs[pair_key(*r)] for r in ranked[:at]])
+                if budget is None:
+                    continue
+                within = [r for r in ranked if costs[pair_key(*r)] <= budget]
+                gap = route[within[1]] - route[target]
+                if len({pair_key(*r) for r in within}) < 2 or not SPLIT_GAP_M <= gap <= SPLIT_GAP_MAX_M:
+                    continue  # another pair within the budget, and the next walk close but clear of the answer
+                if route[target] > SPLIT_MAX_WALK_M:
+                    continue  # the walk must fit the step budget
+                first, second = target
+                at_end = ctx.world.node(end.node)
+                if any(haversine_m(at_end.lat, at_end.lng, q.lat, q.lng) < SPLIT_END_GAP_M
+                       for q in (ctx.world.node(ctx.store_places[sid].node) for sid in target)):
+                    continue  # E no store's doorstep: ending there is not ending at a store
+                back = [*leg(start.node, ctx.store_places[second].node).nodes,
+                        *leg(ctx.store_places[second].node, ctx.store_places[first].node).nodes[1:],
+                        *leg(ctx.store_places[first].node, end.node).nodes[1:]]
+                if _near_in_order(ctx.world, back, ctx.world.node(ctx.store_places[first].node),
+                                  ctx.world.node(ctx.store_places[second].node)):
+                    continue  # the pair walked the other way round would pass both in the graded order too
+                picked = split_shortcuts(within, costs, from_start, ends, between)
+                if sum(r == target for r in picked.values()) > SPLIT_SHORTCUTS_RIGHT:
+                    continue  # too many shortcuts right at once: their shares could not stay even
+                found.append((items, start, end, target, budget, costs, route, picked, gap))
+        return found
+
+    # A pool of drawn tasks, then the suite picked from it: among the candidates that keep every shortcut
+    # within its share and every pair within its cap, each task number takes the one with the fewest
+    # shortcuts right, then the least used pair (the pairs with the shortest walks would gather most
+    # answers), then the least used end point and start.
+    pool: list[Any] = []
+    for want["items"] in SPLIT_ITEMS:  # four items where the stock allows, else three
+        for _ in range(SPLIT_POOL_DRAWS):
+            pool.extend(draw() or [])
+    out: dict[int, Task] = {}
+    used: set[int] = set()
+    places_used = {p.id: 0 for p in places}
+    for n in numbers:
+        open_ = [i for i, c in enumerate(pool) if i not in used and pairs[pair_key(*c[3])] < pair_cap
+                 and all(hits[name] < cap for name, r in c[7].items() if r == c[3])]
+        if not open_:
+            # The data allows no more walks to an end point within the shares: the rest keep the form
+            # without one (the walk ends at the second store).
+            return {**out, **store_to_store_tasks(ctx, numbers[len(out):], pairs, pair_cap)}
+        pick = min(open_, key=lambda i: (sum(r == pool[i][3] for r in pool[i][7].values()),
+                                         pairs[pair_key(*pool[i][3])], places_used[pool[i][2].id],
+                                         places_used[pool[i][1].id], len(pool[i][0]) != SPLIT_ITEMS[0], i))
+        items, start, end, (first, second), budget, costs, route, shortcuts, gap = pool[pick]
+        task = _split_task(ctx, rng, n, items, start, end, first, second, budget, costs, route, shortcuts, gap)
+        # the same list from the same start twice would be the same question
+        used.update(i for i, c in enumerate(pool) if c[0] == items and c[1] is start)
+        pairs[pair_key(first, second)] += 1
+        places_used[start.id] += 1  # starts and end points spread too: the same two places share every walk
+        places_used[end.id] += 1
+        for name, r in shortcuts.items():
+            hits[name] += r == (first, second)
+        out[n] = task
+    return out
+
+
+def place_label(place: Any) -> str:
+    """A place as the intent names it: its name with its street address."""
+    if not place.address or place.address.startswith(place.name):
+        return place.address or place.name
+    return f"{place.name} ({place.address})"
+
+
+def _split_task(ctx: Context, rng: Any, n: int, items: list[tuple[Any, str]], start: Any, end: Any, first: str,
+                second: str, budget: float, costs: dict[str, float], route: dict[tuple[str, str], float],
+                shortcuts: dict[str, tuple[str, str] | None], gap: float) -> Task:
+    money, count = f"${budget:.2f}", {3: "three", 4: "four"}[len(items)]
+    goal = place_label(end)
+    intent = (f"Buy me {_listing(items)}. No single store has all {count} in stock, so buy them in two orders for "
+              f"pickup at two different stores, each item in exactly one of the orders, spending at most {money} "
+              f"in all (the two orders' totals added together). Where both stores have an item in stock, buy it at "
+              f"either one, as long as the two totals stay within {money}. Then walk from {start.name} to pick up "
+              f"both orders, one store after the other, and carry everything to {goal}. Of the pairs of stores "
+              f"that can fill the list within {money} this way, each visited in either order, pick the shortest "
+              f"whole walk: from {start.name} to the first store, plus from there to the second store, plus from "
+              f"there to {end.name}. Walk that route: past the first store, then the second, ending at "
+              f"{end.name}. {WALK_RULE}")
+    prices = split_prices(items, (first, second))
+    assert prices is not None
+    at = {sid: [(p, size) for (p, size), (where, _) in zip(items, prices) if where == sid] for sid in (first, second)}
+    oracle = []
+    for sid in (first, second):  # one order per store: the checkout prices the cart at one pickup store
+        oracle += [c for product, size in at[sid] for c in buy_oracle(product, size, ctx.stores[sid])[:4]]
+        oracle += [call("browser_goto", url=site_url("shop", "/checkout")),
+                   call("browser_click", element=ref("button", "Place order"))]
+    stops = [ctx.store_places[first], ctx.store_places[second]]
+    legs = [ctx.world.directions(a, b) for a, b in zip([start.node, stops[0].node, stops[1].node],
+                                                        [stops[0].node, stops[1].node, end.node])]
+    nodes = [legs[0].nodes[0], *(x for lg in legs for x in lg.nodes[1:])]
+    oracle += [call("browser_goto", url=site_url("map", "/directions", **{"from": start.name, "to": first})),
+               call("browser_goto", url=site_url("map", "/directions", **{"from": first, "to": second})),
+               call("browser_goto", url=site_url("map", "/directions", **{"from": second, "to": end.name})),
+               call("switch_environment", target="embodied",
+                    message="walk past the first store and the second to the end point"),
+               *[call("street_move", neighbour=x) for x in nodes[1:]], call("street_stop"), call("finish_episode")]
+    at_first, at_second, at_end = (ctx.world.node(p.node) for p in (*stops, end))
+    links = ctx.world.neighbours(start.node)
+    return Task(
+        id=f"shopping-pair-{n:03d}", domain="shopping", difficulty="hard", intent=intent,
+        start=StartState(environment="web", web=WebStart(start_url="shop:/"),
+                         embodied=StreetStart(city="manhattan", node=start.node,
+                                              heading=round(rng.choice([lk.heading for lk in links]), 1))),
+        web_goals=[OrdersSplit(items=[ItemRef(product_id=p.id, size=size) for p, size in items],
+                               store_ids=[first, second], max_total=budget)],
+        embodied_goals=[PassedPlace(city="manhattan", node=stops[0].node, lat=at_first.lat, lng=at_first.lng,
+                                    place_id=first),
+                        PassedPlace(city="manhattan", node=stops[1].node, lat=at_second.lat, lng=at_second.lng,
+                                    place_id=second,
+                                    after=Waypoint(node=stops[0].node, lat=at_first.lat, lng=at_first.lng,
+                                                   place_id=first)),
+                        ReachedPlace(city="manhattan", node=end.node, lat=at_end.lat, lng=at_end.lng,
+                                     place_id=end.id)],
+        step_limit=step_budget("shopping", "hard", len(oracle)),
+        oracle=oracle,
+        metadata={"form": "split", "store_nodes": {sid: p.node for sid, p in ctx.store_places.items()},
+                  "shortest_path_m": round(route[(first, second)], 1), "start_lat": ctx.world.node(start.node).lat,
+                  "start_lng": ctx.world.node(start.node).lng, "products": [p.id for p, _ in items],
+                  "sizes": [size for _, size in items], "store_pair": [first, second], "budget": budget,
+                  "pair_costs": costs, "reverse_path_m": round(route[(second, first)], 1),
+                  "end_id": end.id, "end_node": end.node, "margin_m": round(gap, 1),
+                  "walks_m": {f"{a}>{b}": round(m, 1) for (a, b), m in sorted(route.items())},
+                  "shortcuts": {name: (None if r is None else list(r)) for name, r in shortcuts.items()}},
+    )
+
+
+def _pair_shortcuts(items: list[tuple[Any, str]], store_ids: list[str], from_start: dict[str, float],
                     between: Any, costs: dict[str, float], budget: float) -> dict[str, str | None]:
     """The pair each tempting shortcut picks (``pair_key``, or None where it picks none): the pair holding the
     nearest store (of the pairs within the budget, the shortest walk among those holding it), the pair that
@@ -503,8 +777,10 @@ def split_shortcuts(items: list[tuple[Any, str]], store_ids: list[str], from_sta
     }
 
 
-def split_tasks(ctx: Context, numbers: list[int]) -> dict[int, Task]:
-    """The split form for the task numbers given: three or four items, no store with all of them in stock, so
+def store_to_store_tasks(ctx: Context, numbers: list[int], used: dict[str, int] | None = None,
+                         most: int | None = None) -> dict[int, Task]:
+    """The split form without an end point, for the task numbers the end-point form cannot fill (``split_tasks``):
+    three or four items, no store with all of them in stock, so
     two orders at two stores. Every pair of stores that can fill the list is a candidate, priced at the cheaper
     store of the two for each item; the answer is the pair within the budget with the shortest walk from the
     start past one of its stores to the other, visited in that order. Each part decides: some pair with a
@@ -535,8 +811,11 @@ def split_tasks(ctx: Context, numbers: list[int]) -> dict[int, Task]:
     starts = [p for p in sorted(ctx.world.places.values(), key=lambda p: p.id) if p.city == "manhattan"
               and p.kind not in ("store", "shop", "intersection", "address") and ctx.reaches_stores(p)]
     hits = {name: 0 for name in ("nearest store", "cheapest pair", "greedy walk", "straight sum")}
-    cap = int(SPLIT_SHORTCUT_SHARE * len(numbers))
-    pair_cap = int(SPLIT_SHORTCUT_SHARE * len(numbers))
+    cap = int(SPLIT_V9_SHARE * len(numbers)) + 1  # a few tasks: a third rounded down would be too tight
+    pair_cap = int(SPLIT_V9_SHARE * len(numbers)) + 1
+    if used is not None and most is not None:  # after the end-point form: the least used pairs over both
+        pairs.update(used)  # forms come first; the few left may exceed its cap by this form's own share
+        pair_cap = most + pair_cap
     want = {"items": SPLIT_ITEMS[0]}
 
     def draw() -> Any:
@@ -565,7 +844,7 @@ def split_tasks(ctx: Context, numbers: list[int]) -> dict[int, Task]:
                 return None  # the order of the walk, and the next pair within the budget, by a clear margin
             if pairs[target] >= pair_cap:
                 return None  # the central pairs have the shortest walks most often: no pair the target of most
-            picked = split_shortcuts(items, store_ids, from_start, between, costs, budget)
+            picked = _pair_shortcuts(items, store_ids, from_start, between, costs, budget)
             if any(hits[name] >= cap for name, k in picked.items() if k == target):
                 return None  # that shortcut has picked the answer in its share of the tasks already
             return items, start, (first, second), budget, costs, route, picked
@@ -582,7 +861,7 @@ def split_tasks(ctx: Context, numbers: list[int]) -> dict[int, Task]:
             else:
                 raise RuntimeError(f"no split task could be drawn for shopping-pair-{n:03d}")
             items, start, (first, second), budget, costs, route, shortcuts = picked
-            task = _split_task(ctx, rng, n, items, start, first, second, budget, costs, route, between, shortcuts)
+            task = _store_to_store_task(ctx, rng, n, items, start, first, second, budget, costs, route, between, shortcuts)
             if all(t.intent != task.intent for t in out.values()):
                 break
             pairs[pair_key(first, second)] -= 1  # the same question twice
@@ -592,7 +871,7 @@ def split_tasks(ctx: Context, numbers: list[int]) -> dict[int, Task]:
     return out
 
 
-def _split_task(ctx: Context, rng: Any, n: int, items: list[tuple[Any, str]], start: Any, first: str, second: str,
+def _store_to_store_task(ctx: Context, rng: Any, n: int, items: list[tuple[Any, str]], start: Any, first: str, second: str,
                 budget: float, costs: dict[str, float], route: dict[tuple[str, str], float], between: Any,
                 shortcuts: dict[str, str | None]) -> Task:
     money, count = f"${budget:.2f}", {3: "three", 4: "four"}[len(items)]
