@@ -79,6 +79,12 @@ def test_article_page_renders_infobox_body_links_and_category(client):
     assert "[[" not in html and "**" not in html
 
 
+def test_categories_leads_to_the_main_pages_list_of_every_category(client):
+    r = client.get("/categories", headers={EPISODE_HEADER: "ep-a"}, follow_redirects=True)
+    assert r.status_code == 200
+    assert 'id="categories-heading"' in r.text and 'href="/category/climates"' in r.text
+
+
 def test_an_infobox_value_links_only_to_an_article_it_names_as_written(client):
     html = get(client, "/wiki/japan").text
     # The capital is an article's title; the internet domain ".jp" only shares a lookup key with an

@@ -155,6 +155,10 @@ def create_app(ctx: SiteContext, articles_dir: Path = ARTICLES_DIR) -> Starlette
     async def wiki_root(request: Request) -> Response:
         return RedirectResponse("/", status_code=302)
 
+    async def categories_page(request: Request) -> Response:
+        # The list of every category is on the main page; agents guess /categories for it.
+        return RedirectResponse("/#categories-heading", status_code=302)
+
     app = Starlette(routes=[
         Route("/", main_page),
         Route("/wiki/", wiki_root),
@@ -162,6 +166,7 @@ def create_app(ctx: SiteContext, articles_dir: Path = ARTICLES_DIR) -> Starlette
         Route("/search", search_page),
         Route("/random", random_article),
         Route("/category/{name}", category_page),
+        Route("/categories", categories_page),
     ], exception_handlers=exception_handlers(ctx))
     app.state.wiki = wiki
     app.state.reset_episode = randoms.reset_episode
