@@ -131,3 +131,24 @@ def test_only_the_best_order_walked_along_the_map_passes_the_chain() -> None:
             legs = [world.directions(a.id, b.id).nodes for a, b in zip([origin, *perm], perm)]
             nodes = legs[0] + [n for lg in legs[1:] for n in lg[1:]]
             assert chain_passes(world, city, answer, nodes) is (list(perm) == answer), (task["id"], perm)
+
+
+def test_the_distances_as_the_map_shows_them_give_the_answer() -> None:
+    """What the agent reads is each distance rounded to the metre, one direction per pair (the map's walks are
+    the same both ways): summed over the orders, those readings give the task's order by a clear margin."""
+    world = get_world()
+    for task in shortest():
+        meta = task["metadata"]
+        origin = world.places.get(meta["origin_id"]) or world.place(meta["origin_id"])
+        stops = [world.places[p] for p in meta["listed"]]
+        for a in [origin, *stops]:
+            for b in stops:
+                if a.id != b.id:
+                    assert leg(a, b) == leg(b, a), (task["id"], a.id, b.id)
+
+        def shown(a, b) -> float:
+            return float(round(leg(a, b)))
+
+        ranked = sorted(permutations(stops), key=lambda perm: walk_length(shown, origin, perm))
+        assert [p.id for p in ranked[0]] == meta["stops"], task["id"]
+        assert walk_length(shown, origin, ranked[1]) - walk_length(shown, origin, ranked[0]) >= SHORTEST_MARGIN_M - 5
