@@ -12,9 +12,9 @@ test_walking_heuristics.py). Numbers printed here are measurements, not assertio
 from __future__ import annotations
 
 import sys
-from math import factorial
 from collections import Counter, defaultdict
 from itertools import permutations
+from math import factorial
 from pathlib import Path
 from typing import Any
 
