@@ -296,7 +296,8 @@ def greedy_from(leg: Any, here: Any, left: list[Any]) -> list[Any]:
 
 def shortcut_orders(world: Any, leg: Any, origin: Any, stops: list[Any], listed: list[Any]) -> dict[str, list[str]]:
     """The orders a shortcut gives instead of working through every order (the ids, first to last): the order
-    the intent lists; always the nearest stop not yet seen on foot (greedy nearest-next); nearest to farthest
+    the intent lists; always the nearest stop not yet seen on foot (greedy nearest-next); the others as listed,
+    then an end by elimination (the stop-elimination agent's order); nearest to farthest
     from the start as the crow flies; nearest to farthest from the start on foot; the shortest tour on straight
     lines between the places' points (the answer without reading the map); the best walk past all but one stop
     (the smaller search done right), the one left appended. ``leg(a, b)`` is the map's walking distance in
@@ -308,10 +309,15 @@ def shortcut_orders(world: Any, leg: Any, origin: Any, stops: list[Any], listed:
         return haversine_m(pa.lat, pa.lng, pb.lat, pb.lng)
 
     tour = min(permutations(stops), key=lambda perm: walk_length(crow, origin, perm))
+    # the stop-elimination agent's order: the others as listed, then the first listed stop that is neither
+    # listed last nor where greedy nearest-next ends
+    greedy = greedy_from(leg, origin, stops)
+    end = ([p for p in listed if p.id not in (listed[-1].id, greedy[-1].id)] or listed)[0]
     part = min(permutations(stops, len(stops) - 1), key=lambda perm: walk_length(leg, origin, perm))
     rest = [p for p in stops if p not in part]
     return {"listed": [p.id for p in listed],
-            "greedy nearest-next": [p.id for p in greedy_from(leg, origin, stops)],
+            "greedy nearest-next": [p.id for p in greedy],
+            "the others as listed, then elimination's end": [*(p.id for p in listed if p.id != end.id), end.id],
             "straight line from the start": [p.id for p in sorted(
                 stops, key=lambda p: haversine_m(start.lat, start.lng, world.node(p.node).lat,
                                                  world.node(p.node).lng))],
@@ -379,7 +385,7 @@ def shortest_order_tasks(world: Any, resolver: WorldAdapter, city: str, places: 
         task: Task | None = None
         while task is None:
             tries += 1
-            if tries > SHORTEST_TRIES:
+            if tries > SHORTEST_TRIES * (1 if size == SHORTEST_STOPS else 3):  # four: the slot's last chance
                 if size == SHORTEST_FALLBACK_STOPS:
                     break  # a slot left empty, as with any draw that finds too little (a train split's seed)
                 size, tries = SHORTEST_FALLBACK_STOPS, 0
@@ -414,7 +420,8 @@ def shortest_order_tasks(world: Any, resolver: WorldAdapter, city: str, places: 
             # city's tasks (the four-stop fallback, which only clustered Boston needs, is left uncapped)
             if size == SHORTEST_STOPS and max(chosen, key=lambda p: leg(origin, p)) is order[-1]:
                 matched.append(FARTHEST_LAST)
-            if "greedy nearest-next" in matched or len(set(matched) - {FARTHEST_LAST}) > 1 or \
+            if {"greedy nearest-next", "the others as listed, then elimination's end"} & set(matched) or \
+                    len(set(matched) - {FARTHEST_LAST}) > 1 or \
                     any(hits.get(name, 0) + 1 > (SHORTEST_END_SHARE if name == FARTHEST_LAST else SHORTEST_SHARE)
                         * len(slots) for name in matched):
                 continue
