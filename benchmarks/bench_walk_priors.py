@@ -14,6 +14,7 @@ from __future__ import annotations
 import sys
 from collections import Counter, defaultdict
 from itertools import permutations
+from math import factorial
 from pathlib import Path
 from typing import Any
 
@@ -94,15 +95,18 @@ def shortest_form(store: TaskStore) -> None:
         by_walk = sorted(listed, key=lambda p: walk_m(origin.node, p.node))
         rules["end: farthest from the start on foot"] += by_walk[-1].id == order[-1]
         rules["end: nearest the start on foot"] += by_walk[0].id == order[-1]
-        # the end cue combined: the farthest stop last, the other three nearest-next before it
+        # the end cue combined: the farthest stop last, the others nearest-next before it
         rules["order: greedy nearest-next to the others, then the farthest"] += \
             [*greedy_order(origin, by_walk[:-1]), by_walk[-1].id] == order
         rules["order: reverse of listed"] += [p.id for p in listed][::-1] == order
         rules["order: shortest walk past all (the answer)"] += [p.id for p in min(
             permutations(listed), key=lambda perm: sum(walk_m(a.node, b.node) for a, b in zip([origin, *perm], perm)))] == order
     margins = sorted(t.metadata["margin_m"] for t in tasks)
-    print(f"\nnavigation hard, shortest-order form ({len(tasks)} tasks; chance 1 in 24 for an order, 1 in 4 for an end; "
-          f"the best order beats the second by {margins[0]:.0f} to {margins[-1]:.0f} m):")
+    sizes = Counter(len(t.metadata["stops"]) for t in tasks)
+    print(f"\nnavigation hard, shortest-order form ({len(tasks)} tasks: "
+          + ", ".join(f"{n} with {k} stops (chance 1 in {factorial(k)} for an order, 1 in {k} for an end)"
+                      for k, n in sorted(sizes.items(), reverse=True))
+          + f"; the best order beats the second by {margins[0]:.0f} to {margins[-1]:.0f} m):")
     for rule, hits in rules.items():
         print(f"  {rule}: {hits} ({100 * hits / max(len(tasks), 1):.0f} %)")
 

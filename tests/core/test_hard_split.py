@@ -146,12 +146,18 @@ def test_hard_navigation_order_comes_from_the_wiki_not_the_intent() -> None:
     walk limits hold for the stops in every order."""
     from itertools import permutations
 
-    from ewa_mcp.envs.street.taskgen.navigation import STOPS_MAX_M, VIA_MIN_LEG_M, nearest_first
+    from ewa_mcp.envs.street.taskgen.navigation import (
+        PER_CITY_VIA,
+        STOPS_MAX_M,
+        VIA_MIN_LEG_M,
+        nearest_first,
+        shortest_slots,
+    )
     from ewa_mcp.taskgen.common import rng_for
 
     world = get_world()
     hard = [t for t in suite("navigation") if t["difficulty"] == "hard" and t["metadata"]["form"] == "year order"]
-    assert len(hard) >= 15  # the other hard form (the shortest order): tests/core/test_shortest_order.py
+    assert len(hard) == sum(c - shortest_slots(c) for c in PER_CITY_VIA.values())  # the other hard form (the shortest order): tests/core/test_shortest_order.py
     ends_listed_at, nearest_ends = set(), 0  # the old draw rejected both: the end never listed last, nor nearest-first's
     for task in hard:
         meta = task["metadata"]
@@ -177,4 +183,7 @@ def test_hard_navigation_order_comes_from_the_wiki_not_the_intent() -> None:
         assert [g["place_id"] for g in goals] == meta["stops"], task["id"]
         assert [(g.get("after") or {}).get("place_id") for g in goals[:3]] == [None, *meta["stops"][:2]], task["id"]
         assert {g["path_prefix"] for g in task["web_goals"]} == {f"/wiki/{wiki.by_poi_id(p.id).slug}" for p in stops}
-    assert ends_listed_at == {0, 1, 2, 3} and nearest_ends > 0
+    # nearest-first's end is a chance match over the eight tasks of this form (the draw never looks at it), so
+    # only printed; the listing's end in every position still shows the listing is not drawn against the answer
+    print(f"nearest-first ends at the newest in {nearest_ends} of {len(hard)}")
+    assert ends_listed_at == {0, 1, 2, 3}

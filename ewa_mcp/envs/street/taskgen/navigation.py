@@ -6,8 +6,9 @@ Difficulty: a direct route with at most one turn is easy, one with more turns me
 composition (issue 26, principle 6): four named stops visited in the order the wiki gives (oldest
 building first, by the year built), ending at the newest; the intent lists them in an independent shuffle
 (passed_place goals for the first three, each after the one before, reached_place for the last, a wiki
-page view of each). About half the hard tasks (slots a seeded shuffle picks) ask instead for the order that
-makes the shortest walk on foot, from the map's walking distances, graded by the same chain."""
+page view of each). Three in four of the hard tasks (slots a seeded shuffle picks) ask instead for the order
+that makes the shortest walk on foot past five stops, from the map's walking distances, graded by the same
+chain."""
 
 from __future__ import annotations
 
@@ -146,14 +147,20 @@ def article_slug(place: Any) -> str:
     return article.slug
 
 
+def shortest_slots(count: int) -> int:
+    """How many of a city's ``count`` hard slots take the shortest-order form."""
+    return round(count * SHORTEST_SLOTS)
+
+
 def stops_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any], count: int) -> list[Task]:
-    """A city's hard tasks, ids navigation-via-<city>-NNN, in two forms: about half (the slots a seeded shuffle
+    """A city's hard tasks, ids navigation-via-<city>-NNN, in two forms: three in four (the slots a seeded shuffle
     picks, so the id says nothing of the form) ask for the shortest order on foot, the others for the wiki's
     order by year built."""
     slots = list(range(count))
     rng_for("navigation-via-form", city).shuffle(slots)
-    shortest = shortest_order_tasks(world, resolver, city, places, sorted(slots[: count // 2]))
-    return sorted([*year_order_tasks(world, resolver, city, places, sorted(slots[count // 2:])), *shortest],
+    cut = shortest_slots(count)
+    shortest = shortest_order_tasks(world, resolver, city, places, sorted(slots[:cut]))
+    return sorted([*year_order_tasks(world, resolver, city, places, sorted(slots[cut:])), *shortest],
                   key=lambda t: t.id)
 
 
@@ -238,16 +245,37 @@ def year_order_tasks(world: Any, resolver: WorldAdapter, city: str, places: list
     return tasks
 
 
-SHORTEST_NEAR_M = 600.0  # every stop within this of the origin as the crow flies
-SHORTEST_MARGIN_M = 100.0  # the best order beats the second best by at least this (the map rounds to 1 m)
+SHORTEST_STOPS = 5  # 120 orders from fifteen walking distances; four (24 orders) only where five cannot be drawn
+SHORTEST_FALLBACK_STOPS = 4
+SHORTEST_NEAR_M = 700.0  # every stop within this of the origin as the crow flies
+# The shortest leg between two stops: shorter than the year-order form's (the order is searched, not sorted, and
+# a stop passed on the way to another is caught by the chain check below); 150 m left Boston's clustered
+# landmarks almost no draw of five.
+SHORTEST_MIN_LEG_M = 100.0
+# The best order beats the second best by at least SHORTEST_MARGIN_M (the map rounds each leg to 1 m, so a sum
+# of five legs is off by 2.5 m at most: rounding never flips it) but by no more than SHORTEST_MARGIN_MAX_M, so
+# an estimate (straight lines, the listed order) or one slipped sum picks a rival.
+SHORTEST_MARGIN_M = 40.0
+SHORTEST_MARGIN_MAX_M = 120.0
+SHORTEST_MAX_M = {4: STOPS_MAX_M, 5: 2600.0}  # the best walk, by stops (the hard step budget fits it)
+SHORTEST_TRIES = 4000  # draws for one slot with five stops before it falls back to four
 SHORTEST_SHARE = 1 / 3  # no tempting shortcut (shortcut_orders) may give the answer in more of a city's tasks
+# Of a city's hard slots, this share asks for the shortest order, the rest for the wiki's year order (round 9:
+# strong agents sort four years without a slip; a search over 120 orders is where care can fail).
+SHORTEST_SLOTS = 3 / 4
+NUMBER_WORDS = {4: "four", 5: "five"}
+FARTHEST_LAST = "ends at the place farthest from the start on foot"
+# The end a shortest walk most often has (in three of four kept draws without this cap).
+SHORTEST_END_SHARE = 1 / 3
 SHORTEST_TEMPLATES = [
-    "Starting at {origin}, visit {stops} in the order that makes the shortest walk on foot, and end your walk "
-    "at the last of them. The order is yours to find: compare the walking distances the map site gives (from "
-    "the start to each place and between each two places; walking distances, not straight lines). " + WALK_RULE,
-    "I am at {origin} and want to see {stops}, all four, in whichever order makes my whole walk shortest, "
-    "ending at the last one I visit. Work the order out from the walking distances the map site gives between "
-    "my start and each place and between the places themselves, then walk it. " + WALK_RULE,
+    "Starting at {origin}, visit {stops} in the order that makes the shortest walk on foot in all, using the "
+    "map's walking distances, and end your walk at the last of them. The order is yours to find: compare the "
+    "walking distances the map site gives (from the start to each place and between each two places; walking "
+    "distances, not straight lines). " + WALK_RULE,
+    "I am at {origin} and want to see {stops}, all {count}, in whichever order makes my whole walk on foot "
+    "shortest, using the map's walking distances, ending at the last one I visit. Work the order out from the "
+    "walking distances the map site gives between my start and each place and between the places themselves, "
+    "then walk it. " + WALK_RULE,
 ]
 
 
@@ -256,22 +284,46 @@ def walk_length(leg: Any, origin: Any, order: Any) -> float:
     return float(sum(leg(a, b) for a, b in zip([origin, *order], order)))
 
 
-def shortcut_orders(world: Any, leg: Any, origin: Any, stops: list[Any], listed: list[Any]) -> dict[str, list[str]]:
-    """The orders a shortcut gives instead of working through all 24 (the ids, first to last): the order the
-    intent lists; always the nearest stop not yet seen on foot (greedy nearest-next); nearest to farthest from
-    the start as the crow flies; nearest to farthest from the start on foot. ``leg(a, b)`` is the map's
-    walking distance in metres."""
-    here, left, greedy = origin, list(stops), []
+def greedy_from(leg: Any, here: Any, left: list[Any]) -> list[Any]:
+    """Always the nearest place not yet seen (by ``leg``), from ``here``."""
+    left, out = list(left), []
     while left:
         here = min(left, key=lambda p: leg(here, p))
         left.remove(here)
-        greedy.append(here.id)
+        out.append(here)
+    return out
+
+
+def shortcut_orders(world: Any, leg: Any, origin: Any, stops: list[Any], listed: list[Any]) -> dict[str, list[str]]:
+    """The orders a shortcut gives instead of working through every order (the ids, first to last): the order
+    the intent lists; always the nearest stop not yet seen on foot (greedy nearest-next); the others as listed,
+    then an end by elimination (the stop-elimination agent's order); nearest to farthest
+    from the start as the crow flies; nearest to farthest from the start on foot; the shortest tour on straight
+    lines between the places' points (the answer without reading the map); the best walk past all but one stop
+    (the smaller search done right), the one left appended. ``leg(a, b)`` is the map's walking distance in
+    metres."""
     start = world.node(origin.node)
-    crow = sorted(stops, key=lambda p: haversine_m(start.lat, start.lng, world.node(p.node).lat,
-                                                   world.node(p.node).lng))
-    return {"listed": [p.id for p in listed], "greedy nearest-next": greedy,
-            "straight line from the start": [p.id for p in crow],
-            "walk from the start": [p.id for p in sorted(stops, key=lambda p: leg(origin, p))]}
+
+    def crow(a: Any, b: Any) -> float:
+        pa, pb = world.node(a.node), world.node(b.node)
+        return haversine_m(pa.lat, pa.lng, pb.lat, pb.lng)
+
+    tour = min(permutations(stops), key=lambda perm: walk_length(crow, origin, perm))
+    # the stop-elimination agent's order: the others as listed, then the first listed stop that is neither
+    # listed last nor where greedy nearest-next ends
+    greedy = greedy_from(leg, origin, stops)
+    end = ([p for p in listed if p.id not in (listed[-1].id, greedy[-1].id)] or listed)[0]
+    part = min(permutations(stops, len(stops) - 1), key=lambda perm: walk_length(leg, origin, perm))
+    rest = [p for p in stops if p not in part]
+    return {"listed": [p.id for p in listed],
+            "greedy nearest-next": [p.id for p in greedy],
+            "the others as listed, then elimination's end": [*(p.id for p in listed if p.id != end.id), end.id],
+            "straight line from the start": [p.id for p in sorted(
+                stops, key=lambda p: haversine_m(start.lat, start.lng, world.node(p.node).lat,
+                                                 world.node(p.node).lng))],
+            "walk from the start": [p.id for p in sorted(stops, key=lambda p: leg(origin, p))],
+            "straight-line tour": [p.id for p in tour],
+            "best walk past all but one, then the last": [p.id for p in [*part, *rest]]}
 
 
 def chain_goals(world: Any, city: str, order: list[Any]) -> list[Any]:
@@ -296,17 +348,21 @@ def chain_passes(world: Any, city: str, order: list[Any], nodes: list[str]) -> b
 
 def shortest_order_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any],
                          slots: list[int]) -> list[Task]:
-    """Hard by composition and discrimination (issue 26, principle 6): four named stops, visited in the order
-    that makes the shortest walk on foot, ending at the last. The order is the agent's to find from the map's
-    walking distances (ten of them: the start to each stop, each two stops), working through the 24 orders;
-    each distance is stated plainly, but only all of them together give the order. Kept draws: the best order
-    beats the second best by SHORTEST_MARGIN_M; no shortcut (shortcut_orders) gives it in more than
-    SHORTEST_SHARE of the city's tasks, greedy nearest-next never; and a walk that follows the map past the
-    stops in any other order fails the chain (the grader passes only the best order, even though a stop
-    passed early on the way to another does not count against a walk)."""
+    """Hard by composition and discrimination (issue 26, principle 6): five named stops (four where the city's
+    data gives no five), visited in the order that makes the shortest walk on foot, ending at the last. The
+    order is the agent's to find from the map's walking distances (fifteen of them: the start to each stop,
+    each two stops), working through the 120 orders; each distance is stated plainly, but only all of them
+    together give the order. Kept draws: the best order beats the second best by SHORTEST_MARGIN_M to
+    SHORTEST_MARGIN_MAX_M (clear of the map's rounding, small enough that an estimate or one slipped sum picks
+    a rival); no shortcut (shortcut_orders) gives it in more than SHORTEST_SHARE of the city's tasks, greedy
+    nearest-next never, and no draw is given by two shortcuts at once; and a walk that follows the map past the
+    stops in any other order fails the chain (the grader passes only the best order, even though a stop passed
+    early on the way to another does not count against a walk)."""
     rng = rng_for("navigation-shortest", city)
+    # one bracket: an address that holds one ("Madison Square Park (E 23rd St & Madison Ave)") reads as a
+    # place named twice in a list of five
     stops_pool = [p for p in places if p.kind not in ("intersection", "address")
-                  and describe(p).endswith(")") and resolves_to(resolver, p)]
+                  and describe(p).endswith(")") and describe(p).count("(") == 1 and resolves_to(resolver, p)]
     tasks: list[Task] = []
     used: set[tuple[str, ...]] = set()
     hits: dict[str, int] = {}
@@ -320,77 +376,99 @@ def shortest_order_tasks(world: Any, resolver: WorldAdapter, city: str, places: 
     def leg(a: Any, b: Any) -> float:
         return float(route(a, b).distance_m)
 
-    tries = 0
-    while len(tasks) < len(slots) and tries < len(slots) * 1000:
-        tries += 1
-        origin = rng.choice(places)
-        here = world.node(origin.node)
-        near = [p for p in stops_pool if haversine_m(here.lat, here.lng, p.lat, p.lng) <= SHORTEST_NEAR_M]
-        if len(near) < STOPS:
-            continue
-        chosen = sorted(rng.sample(near, STOPS), key=lambda p: p.id)
-        key = (origin.id, *(p.id for p in chosen))
-        if key in used or len({origin.node, *(p.node for p in chosen)}) < STOPS + 1 \
-                or not resolves_to(resolver, origin):
-            continue
-        try:
-            pairs = [(origin, p) for p in chosen] + [(a, b) for a in chosen for b in chosen if a.id != b.id]
-            if min(leg(a, b) for a, b in pairs) < VIA_MIN_LEG_M:
+    def joined(origin: Any, perm: Any) -> list[str]:
+        walk = [route(a, b) for a, b in zip([origin, *perm], perm)]
+        return list(walk[0].nodes + [x for lg in walk[1:] for x in lg.nodes[1:]])
+
+    for n in slots:
+        size, tries = SHORTEST_STOPS, 0
+        task: Task | None = None
+        while task is None:
+            tries += 1
+            if tries > SHORTEST_TRIES * (1 if size == SHORTEST_STOPS else 3):  # four: the slot's last chance
+                if size == SHORTEST_FALLBACK_STOPS:
+                    break  # a slot left empty, as with any draw that finds too little (a train split's seed)
+                size, tries = SHORTEST_FALLBACK_STOPS, 0
+            origin = rng.choice(places)
+            here = world.node(origin.node)
+            near = [p for p in stops_pool if haversine_m(here.lat, here.lng, p.lat, p.lng) <= SHORTEST_NEAR_M]
+            if len(near) < size:
                 continue
-            ranked = sorted(permutations(chosen), key=lambda perm: walk_length(leg, origin, perm))
-        except ValueError:
-            continue
-        order = list(ranked[0])
-        best, second = walk_length(leg, origin, order), walk_length(leg, origin, ranked[1])
-        if second - best < SHORTEST_MARGIN_M or best > STOPS_MAX_M:
-            continue
-        n = slots[len(tasks)]
-        listed = list(chosen)
-        rng_for("navigation-shortest-listed", city, n).shuffle(listed)  # its own stream, never redrawn
-        target = [p.id for p in order]
-        matched = [name for name, ids in shortcut_orders(world, leg, origin, chosen, listed).items() if ids == target]
-        if "greedy nearest-next" in matched or len(matched) > 1 or \
-                any(hits.get(name, 0) + 1 > SHORTEST_SHARE * len(slots) for name in matched):
-            continue
-        legs = [route(a, b) for a, b in zip([origin, *order], order)]
-        nodes = legs[0].nodes + [x for lg in legs[1:] for x in lg.nodes[1:]]
-        wrong_passes = False
-        for perm in ranked[1:]:
-            walk = [route(a, b) for a, b in zip([origin, *perm], perm)]
-            if chain_passes(world, city, order, walk[0].nodes + [x for lg in walk[1:] for x in lg.nodes[1:]]):
-                wrong_passes = True
-                break
-        if wrong_passes or not chain_passes(world, city, order, nodes):
-            continue
-        for name in matched:
-            hits[name] = hits.get(name, 0) + 1
-        used.add(key)
-        # every distance the order needs, looked up as an agent would (start to each stop, each two stops)
-        lookups = [(origin, p) for p in listed] + [(a, b) for i, a in enumerate(listed) for b in listed[i + 1:]]
-        oracle = [*[call("browser_goto", url=site_url("map", "/directions", **{"from": a.name, "to": b.name}))
-                    for a, b in lookups],
-                  call("switch_environment", target="embodied", message="walk the shortest order"),
-                  *walk_oracle(nodes), call("finish_episode")]
-        task_rng = rng_for("navigation-shortest", city, n)
-        stops = ", ".join(describe(p) for p in listed[:-1]) + " and " + describe(listed[-1])
-        tasks.append(Task(
-            id=f"navigation-via-{city}-{n:03d}",
-            domain="navigation",
-            difficulty="hard",
-            intent=task_rng.choice(SHORTEST_TEMPLATES).format(origin=describe(origin), stops=stops),
-            start=start_state(world, city, origin, task_rng),
-            web_goals=[PageVisited(site="map", path_prefix="/directions")],
-            embodied_goals=chain_goals(world, city, order),
-            step_limit=step_budget("navigation", "hard", len(oracle)),
-            oracle=oracle,
-            metadata={"shortest_path_m": round(best, 1), "start_lat": here.lat, "start_lng": here.lng,
-                      "origin_node": origin.node, "destination_node": order[-1].node,
-                      "route_steps": sum(len(x.steps) for x in legs), "turns": sum(turns(x) for x in legs),
-                      "stops": target, "listed": [p.id for p in listed], "origin_id": origin.id,
-                      "form": "shortest order", "second_best_m": round(second, 1),
-                      "margin_m": round(second - best, 1)},
-        ))
+            chosen = sorted(rng.sample(near, size), key=lambda p: p.id)
+            key = (origin.id, *(p.id for p in chosen))
+            if key in used or len({origin.node, *(p.node for p in chosen)}) < size + 1 \
+                    or not resolves_to(resolver, origin):
+                continue
+            try:
+                pairs = [(origin, p) for p in chosen] + [(a, b) for a in chosen for b in chosen if a.id != b.id]
+                if min(leg(a, b) for a, b in pairs) < SHORTEST_MIN_LEG_M:
+                    continue
+                ranked = sorted(permutations(chosen), key=lambda perm: walk_length(leg, origin, perm))
+            except ValueError:
+                continue
+            order = list(ranked[0])
+            best, second = walk_length(leg, origin, order), walk_length(leg, origin, ranked[1])
+            if not SHORTEST_MARGIN_M <= second - best <= SHORTEST_MARGIN_MAX_M or best > SHORTEST_MAX_M[size]:
+                continue
+            listed = list(chosen)
+            rng_for("navigation-shortest-listed", city, n).shuffle(listed)  # its own stream, never redrawn
+            target = [p.id for p in order]
+            matched = [name for name, ids in shortcut_orders(world, leg, origin, chosen, listed).items()
+                       if ids == target]
+            # the end alone: the place farthest from the start on foot last cuts the search to the orders of
+            # the others (24 of 120), so a five-stop answer ends there in at most SHORTEST_END_SHARE of a
+            # city's tasks (the four-stop fallback, which only clustered Boston needs, is left uncapped)
+            if size == SHORTEST_STOPS and max(chosen, key=lambda p: leg(origin, p)) is order[-1]:
+                matched.append(FARTHEST_LAST)
+            if {"greedy nearest-next", "the others as listed, then elimination's end"} & set(matched) or \
+                    len(set(matched) - {FARTHEST_LAST}) > 1 or \
+                    any(hits.get(name, 0) + 1 > (SHORTEST_END_SHARE if name == FARTHEST_LAST else SHORTEST_SHARE)
+                        * len(slots) for name in matched):
+                continue
+            nodes = joined(origin, order)
+            if not chain_passes(world, city, order, nodes) or \
+                    any(chain_passes(world, city, order, joined(origin, perm)) for perm in ranked[1:]):
+                continue
+            for name in matched:
+                hits[name] = hits.get(name, 0) + 1
+            used.add(key)
+            task = shortest_task(world, city, n, origin, order, listed, nodes, route, best, second)
+        if task is not None:
+            tasks.append(task)
     return tasks
+
+
+def shortest_task(world: Any, city: str, n: int, origin: Any, order: list[Any], listed: list[Any],
+                  nodes: list[str], route: Any, best: float, second: float) -> Task:
+    """The task of a kept shortest-order draw: every distance the order needs, looked up as an agent would
+    (the start to each stop, each two stops), then the walk."""
+    legs = [route(a, b) for a, b in zip([origin, *order], order)]
+    lookups = [(origin, p) for p in listed] + [(a, b) for i, a in enumerate(listed) for b in listed[i + 1:]]
+    oracle = [*[call("browser_goto", url=site_url("map", "/directions", **{"from": a.name, "to": b.name}))
+                for a, b in lookups],
+              call("switch_environment", target="embodied", message="walk the shortest order"),
+              *walk_oracle(nodes), call("finish_episode")]
+    task_rng = rng_for("navigation-shortest", city, n)
+    stops = ", ".join(describe(p) for p in listed[:-1]) + " and " + describe(listed[-1])
+    here = world.node(origin.node)
+    return Task(
+        id=f"navigation-via-{city}-{n:03d}",
+        domain="navigation",
+        difficulty="hard",
+        intent=task_rng.choice(SHORTEST_TEMPLATES).format(origin=describe(origin), stops=stops,
+                                                          count=NUMBER_WORDS[len(order)]),
+        start=start_state(world, city, origin, task_rng),
+        web_goals=[PageVisited(site="map", path_prefix="/directions")],
+        embodied_goals=chain_goals(world, city, order),
+        step_limit=step_budget("navigation", "hard", len(oracle)),
+        oracle=oracle,
+        metadata={"shortest_path_m": round(best, 1), "start_lat": here.lat, "start_lng": here.lng,
+                  "origin_node": origin.node, "destination_node": order[-1].node,
+                  "route_steps": sum(len(x.steps) for x in legs), "turns": sum(turns(x) for x in legs),
+                  "stops": [p.id for p in order], "listed": [p.id for p in listed], "origin_id": origin.id,
+                  "form": "shortest order", "second_best_m": round(second, 1),
+                  "margin_m": round(second - best, 1)},
+    )
 
 
 def waypoint(world: Any, place: Any) -> Waypoint:
