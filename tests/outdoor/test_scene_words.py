@@ -104,7 +104,15 @@ def test_a_store_ahead_is_on_the_side_of_the_street_its_node_names(world):
                     where = frontage_where(scene, f)
                     if f.place_id != store_id or "-hand side of" not in where:
                         continue
-                    said = next(s for s in places_here(world, graph, at, heading) if store.name in s)
+                    # a sign names a store or a station; a building (an end point) is told by its look
+                    look = (store.description_hint or "").rstrip(".").lower()[:40]
+                    said = next((s for s in places_here(world, graph, at, heading)
+                                 if store.name in s or (look and look in s.lower())),
+                                f"not described at its node {store.id} {at}")
+                    if said.startswith(("behind you", "ahead of you")):
+                        # an entrance up the street from its node (a station stair 58 m up the avenue):
+                        # walked past before the node, so the node rightly says behind; no side to compare
+                        continue
                     assert said.startswith(f"on your {f.side},"), (graph.ids[i], heading, where, said)
                     named += 1
     assert named > 50

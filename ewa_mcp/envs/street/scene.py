@@ -262,7 +262,14 @@ def compute_scene(world: World, graph: CityGraph, i: int, heading: float, label:
             if street_side:
                 side = street_side
             elif on_street:  # its node says "ahead of you" / "behind you": beside the street only near its axis
-                on_street = side != "ahead" and abs(lateral) <= STREET_SIDE_M
+                # Measured against the street's own heading at the place's node, not the view's: a view
+                # turned off the street's line (a cardinal view down a grid street at 29°) would put an
+                # entrance on the street's far side when it stands on the near one.
+                along_h = street_heading[graph.index[p.node]]
+                street_lateral = d * math.sin(math.radians(angle_diff(bearing_deg(lat0, lng0, elat, elng), along_h)))
+                on_street = side != "ahead" and abs(street_lateral) <= STREET_SIDE_M
+                if on_street:
+                    side = "right" if street_lateral > 0 else "left"
             scene.frontages.append(Frontage(side, round(max(along, 3.0), 1), round(abs(lateral), 1),
                                             round(d, 1), round(rel, 1), p.kind,
                                             p.name if p.kind in SIGN_KINDS else None, _style(p),
