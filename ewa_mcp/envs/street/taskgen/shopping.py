@@ -537,6 +537,26 @@ def _near_in_order(world: Any, nodes: list[str], first: Any, second: Any, radius
     return at is not None and any(near[1][at:])
 
 
+def lacking_sets(ctx: Context, store_ids: list[str]) -> tuple[dict[frozenset[str], list[tuple[Any, str]]],
+                                                                list[frozenset[str]]]:
+    """Items (product, size) by the set of stores that lack them (sold out or not sold), and those sets in a
+    fixed order. A split list is drawn set by set, each as likely as the next: drawn item by item, nearly
+    every list of three or four has a store with all of them."""
+    lacking: dict[frozenset[str], list[tuple[Any, str]]] = {}
+    for product in ctx.products:
+        for size in product.sizes:
+            missing = frozenset(sid for sid in store_ids if not in_stock(product, size.label, sid))
+            if missing and len(missing) < len(store_ids):
+                lacking.setdefault(missing, []).append((product, size.label))
+    return lacking, sorted(lacking, key=sorted)
+
+
+def walk_places(ctx: Context) -> list[Any]:
+    """Every named Manhattan place a walk to the stores can start (or end) at, in id order."""
+    return [p for p in sorted(ctx.world.places.values(), key=lambda p: p.id) if p.city == "manhattan"
+            and p.kind not in ("store", "shop", "intersection", "address") and ctx.reaches_stores(p)]
+
+
 def split_tasks(ctx: Context, numbers: list[int]) -> dict[int, Task]:
     """The split form for the task numbers given: four items where stock allows (else three), no store with
     all of them in stock, so two orders at two stores; then the goods are carried to an end point E. Every
@@ -569,19 +589,10 @@ def split_tasks(ctx: Context, numbers: list[int]) -> dict[int, Task]:
         return to_end_cache[(end.id, sid)]
 
     pairs = {pair_key(a, b): 0 for i, a in enumerate(store_ids) for b in store_ids[i + 1:]}
-    # Items drawn by which stores lack them (sold out or not sold), each such set as likely as the next: drawn
-    # uniformly, nearly every list of three or four has a store with all of them.
-    lacking: dict[frozenset[str], list[tuple[Any, str]]] = {}
-    for product in ctx.products:
-        for size in product.sizes:
-            missing = frozenset(sid for sid in store_ids if not in_stock(product, size.label, sid))
-            if missing and len(missing) < len(store_ids):
-                lacking.setdefault(missing, []).append((product, size.label))
-    kinds = sorted(lacking, key=sorted)
-    # Any named place the walk fits from (and to): starts and ends between stores far apart are where the
-    # walks rank the pairs and orders differently from the shortcuts.
-    places = [p for p in sorted(ctx.world.places.values(), key=lambda p: p.id) if p.city == "manhattan"
-              and p.kind not in ("store", "shop", "intersection", "address") and ctx.reaches_stores(p)]
+    lacking, kinds = lacking_sets(ctx, store_ids)
+    # Starts and ends between stores far apart are where the walks rank the pairs and orders differently
+    # from the shortcuts.
+    places = walk_places(ctx)
     by_store: dict[str, list[Any]] = {}
     by_pair: dict[str, list[Any]] = {}
     for place in places:
@@ -797,19 +808,10 @@ def store_to_store_tasks(ctx: Context, numbers: list[int], used: dict[str, int] 
         return between_cache[(a, b)]
 
     pairs = {pair_key(a, b): 0 for i, a in enumerate(store_ids) for b in store_ids[i + 1:]}
-    # Items drawn by which stores lack them (sold out or not sold), each such set as likely as the next: drawn
-    # uniformly, nearly every list of three or four has a store with all of them.
-    lacking: dict[frozenset[str], list[tuple[Any, str]]] = {}
-    for product in ctx.products:
-        for size in product.sizes:
-            missing = frozenset(sid for sid in store_ids if not in_stock(product, size.label, sid))
-            if missing and len(missing) < len(store_ids):
-                lacking.setdefault(missing, []).append((product, size.label))
-    kinds = sorted(lacking, key=sorted)
-    # Any named place the walk fits from: starts between two stores far apart are where the walk past one
-    # store to the other and the two walks from the start rank the pairs differently.
-    starts = [p for p in sorted(ctx.world.places.values(), key=lambda p: p.id) if p.city == "manhattan"
-              and p.kind not in ("store", "shop", "intersection", "address") and ctx.reaches_stores(p)]
+    lacking, kinds = lacking_sets(ctx, store_ids)
+    # Starts between two stores far apart are where the walk past one store to the other and the two walks
+    # from the start rank the pairs differently.
+    starts = walk_places(ctx)
     hits = {name: 0 for name in ("nearest store", "cheapest pair", "greedy walk", "straight sum")}
     cap = int(SPLIT_V9_SHARE * len(numbers)) + 1  # a few tasks: a third rounded down would be too tight
     pair_cap = int(SPLIT_V9_SHARE * len(numbers)) + 1
