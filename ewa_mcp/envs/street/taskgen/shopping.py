@@ -705,28 +705,40 @@ def place_label(place: Any) -> str:
     return f"{place.name} ({place.address})"
 
 
+def _split_list_words(items: list[tuple[Any, str]], budget: float) -> str:
+    """The split list's opening, the same in both forms: the items, two orders, the budget and how to split."""
+    money, count = f"${budget:.2f}", {3: "three", 4: "four"}[len(items)]
+    return (f"Buy me {_listing(items)}. No single store has all {count} in stock, so buy them in two orders for "
+            f"pickup at two different stores, each item in exactly one of the orders, spending at most {money} "
+            f"in all (the two orders' totals added together). Where both stores have an item in stock, buy it at "
+            f"either one, as long as the two totals stay within {money}.")
+
+
+def _two_orders_oracle(ctx: Context, items: list[tuple[Any, str]], first: str, second: str) -> list[Any]:
+    """The oracle's two orders, each item at the store of the pair where it is cheaper."""
+    prices = split_prices(items, (first, second))
+    assert prices is not None
+    at = {sid: [(p, size) for (p, size), (where, _) in zip(items, prices) if where == sid] for sid in (first, second)}
+    oracle: list[Any] = []
+    for sid in (first, second):  # one order per store: the checkout prices the cart at one pickup store
+        oracle += [c for product, size in at[sid] for c in buy_oracle(product, size, ctx.stores[sid])[:4]]
+        oracle += [call("browser_goto", url=site_url("shop", "/checkout")),
+                   call("browser_click", element=ref("button", "Place order"))]
+    return oracle
+
+
 def _split_task(ctx: Context, rng: Any, n: int, items: list[tuple[Any, str]], start: Any, end: Any, first: str,
                 second: str, budget: float, costs: dict[str, float], route: dict[tuple[str, str], float],
                 shortcuts: dict[str, tuple[str, str] | None], gap: float) -> Task:
-    money, count = f"${budget:.2f}", {3: "three", 4: "four"}[len(items)]
+    money = f"${budget:.2f}"
     goal = place_label(end)
-    intent = (f"Buy me {_listing(items)}. No single store has all {count} in stock, so buy them in two orders for "
-              f"pickup at two different stores, each item in exactly one of the orders, spending at most {money} "
-              f"in all (the two orders' totals added together). Where both stores have an item in stock, buy it at "
-              f"either one, as long as the two totals stay within {money}. Then walk from {start.name} to pick up "
+    intent = (f"{_split_list_words(items, budget)} Then walk from {start.name} to pick up "
               f"both orders, one store after the other, and carry everything to {goal}. Of the pairs of stores "
               f"that can fill the list within {money} this way, each visited in either order, pick the shortest "
               f"whole walk: from {start.name} to the first store, plus from there to the second store, plus from "
               f"there to {end.name}. Walk that route: past the first store, then the second, ending at "
               f"{end.name}. {WALK_RULE}")
-    prices = split_prices(items, (first, second))
-    assert prices is not None
-    at = {sid: [(p, size) for (p, size), (where, _) in zip(items, prices) if where == sid] for sid in (first, second)}
-    oracle = []
-    for sid in (first, second):  # one order per store: the checkout prices the cart at one pickup store
-        oracle += [c for product, size in at[sid] for c in buy_oracle(product, size, ctx.stores[sid])[:4]]
-        oracle += [call("browser_goto", url=site_url("shop", "/checkout")),
-                   call("browser_click", element=ref("button", "Place order"))]
+    oracle = _two_orders_oracle(ctx, items, first, second)
     stops = [ctx.store_places[first], ctx.store_places[second]]
     legs = [ctx.world.directions(a, b) for a, b in zip([start.node, stops[0].node, stops[1].node],
                                                         [stops[0].node, stops[1].node, end.node])]
@@ -876,23 +888,13 @@ def store_to_store_tasks(ctx: Context, numbers: list[int], used: dict[str, int] 
 def _store_to_store_task(ctx: Context, rng: Any, n: int, items: list[tuple[Any, str]], start: Any, first: str, second: str,
                 budget: float, costs: dict[str, float], route: dict[tuple[str, str], float], between: Any,
                 shortcuts: dict[str, str | None]) -> Task:
-    money, count = f"${budget:.2f}", {3: "three", 4: "four"}[len(items)]
-    intent = (f"Buy me {_listing(items)}. No single store has all {count} in stock, so buy them in two orders for "
-              f"pickup at two different stores, each item in exactly one of the orders, spending at most {money} "
-              f"in all (the two orders' totals added together). Where both stores have an item in stock, buy it at "
-              f"either one, as long as the two totals stay within {money}. Of the pairs of stores that can fill "
+    money = f"${budget:.2f}"
+    intent = (f"{_split_list_words(items, budget)} Of the pairs of stores that can fill "
               f"the list within {money} this way, pick the pair with the shortest walk from {start.name} to one "
               f"of its stores and on to the other (count both ways round for each pair: the walk from "
               f"{start.name} to the first store plus the walk from there to the second). Then walk that route "
               f"from {start.name}: past the first store, ending at the second. {WALK_RULE}")
-    prices = split_prices(items, (first, second))
-    assert prices is not None
-    at = {sid: [(p, size) for (p, size), (where, _) in zip(items, prices) if where == sid] for sid in (first, second)}
-    oracle = []
-    for sid in (first, second):  # one order per store: the checkout prices the cart at one pickup store
-        oracle += [c for product, size in at[sid] for c in buy_oracle(product, size, ctx.stores[sid])[:4]]
-        oracle += [call("browser_goto", url=site_url("shop", "/checkout")),
-                   call("browser_click", element=ref("button", "Place order"))]
+    oracle = _two_orders_oracle(ctx, items, first, second)
     legs = [ctx.walk(start, first), ctx.world.directions(ctx.store_places[first].node, ctx.store_places[second].node)]
     nodes = [*legs[0].nodes, *legs[1].nodes[1:]]
     oracle += [call("browser_goto", url=site_url("map", "/directions", **{"from": start.name, "to": first})),
