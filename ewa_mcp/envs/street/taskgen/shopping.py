@@ -727,6 +727,28 @@ def _two_orders_oracle(ctx: Context, items: list[tuple[Any, str]], first: str, s
     return oracle
 
 
+def _split_common(ctx: Context, rng: Any, n: int, items: list[tuple[Any, str]], start: Any, first: str,
+                  second: str, budget: float) -> dict[str, Any]:
+    """What both split forms' tasks share: the id, the start and the two-order web goal."""
+    links = ctx.world.neighbours(start.node)
+    return {"id": f"shopping-pair-{n:03d}", "domain": "shopping", "difficulty": "hard",
+            "start": StartState(environment="web", web=WebStart(start_url="shop:/"),
+                                embodied=StreetStart(city="manhattan", node=start.node,
+                                                     heading=round(rng.choice([lk.heading for lk in links]), 1))),
+            "web_goals": [OrdersSplit(items=[ItemRef(product_id=p.id, size=size) for p, size in items],
+                                      store_ids=[first, second], max_total=budget)]}
+
+
+def _split_metadata(ctx: Context, items: list[tuple[Any, str]], start: Any, first: str, second: str, budget: float,
+                    costs: dict[str, float], route: dict[tuple[str, str], float]) -> dict[str, Any]:
+    """The metadata both split forms open with (the end-point form adds its end and walks)."""
+    return {"form": "split", "store_nodes": {sid: p.node for sid, p in ctx.store_places.items()},
+            "shortest_path_m": round(route[(first, second)], 1), "start_lat": ctx.world.node(start.node).lat,
+            "start_lng": ctx.world.node(start.node).lng, "products": [p.id for p, _ in items],
+            "sizes": [size for _, size in items], "store_pair": [first, second], "budget": budget,
+            "pair_costs": costs, "reverse_path_m": round(route[(second, first)], 1)}
+
+
 def _split_task(ctx: Context, rng: Any, n: int, items: list[tuple[Any, str]], start: Any, end: Any, first: str,
                 second: str, budget: float, costs: dict[str, float], route: dict[tuple[str, str], float],
                 shortcuts: dict[str, tuple[str, str] | None], gap: float) -> Task:
@@ -750,14 +772,8 @@ def _split_task(ctx: Context, rng: Any, n: int, items: list[tuple[Any, str]], st
                     message="walk past the first store and the second to the end point"),
                *[call("street_move", neighbour=x) for x in nodes[1:]], call("street_stop"), call("finish_episode")]
     at_first, at_second, at_end = (ctx.world.node(p.node) for p in (*stops, end))
-    links = ctx.world.neighbours(start.node)
     return Task(
-        id=f"shopping-pair-{n:03d}", domain="shopping", difficulty="hard", intent=intent,
-        start=StartState(environment="web", web=WebStart(start_url="shop:/"),
-                         embodied=StreetStart(city="manhattan", node=start.node,
-                                              heading=round(rng.choice([lk.heading for lk in links]), 1))),
-        web_goals=[OrdersSplit(items=[ItemRef(product_id=p.id, size=size) for p, size in items],
-                               store_ids=[first, second], max_total=budget)],
+        **_split_common(ctx, rng, n, items, start, first, second, budget), intent=intent,
         embodied_goals=[PassedPlace(city="manhattan", node=stops[0].node, lat=at_first.lat, lng=at_first.lng,
                                     place_id=first),
                         PassedPlace(city="manhattan", node=stops[1].node, lat=at_second.lat, lng=at_second.lng,
@@ -768,11 +784,7 @@ def _split_task(ctx: Context, rng: Any, n: int, items: list[tuple[Any, str]], st
                                      place_id=end.id)],
         step_limit=step_budget("shopping", "hard", len(oracle)),
         oracle=oracle,
-        metadata={"form": "split", "store_nodes": {sid: p.node for sid, p in ctx.store_places.items()},
-                  "shortest_path_m": round(route[(first, second)], 1), "start_lat": ctx.world.node(start.node).lat,
-                  "start_lng": ctx.world.node(start.node).lng, "products": [p.id for p, _ in items],
-                  "sizes": [size for _, size in items], "store_pair": [first, second], "budget": budget,
-                  "pair_costs": costs, "reverse_path_m": round(route[(second, first)], 1),
+        metadata={**_split_metadata(ctx, items, start, first, second, budget, costs, route),
                   "end_id": end.id, "end_node": end.node, "margin_m": round(gap, 1),
                   "walks_m": {f"{a}>{b}": round(m, 1) for (a, b), m in sorted(route.items())},
                   "shortcuts": {name: (None if r is None else list(r)) for name, r in shortcuts.items()}},
@@ -903,25 +915,15 @@ def _store_to_store_task(ctx: Context, rng: Any, n: int, items: list[tuple[Any, 
                *[call("street_move", neighbour=x) for x in nodes[1:]], call("street_stop"), call("finish_episode")]
     places = [ctx.store_places[first], ctx.store_places[second]]
     ends = [ctx.world.node(p.node) for p in places]
-    links = ctx.world.neighbours(start.node)
     return Task(
-        id=f"shopping-pair-{n:03d}", domain="shopping", difficulty="hard", intent=intent,
-        start=StartState(environment="web", web=WebStart(start_url="shop:/"),
-                         embodied=StreetStart(city="manhattan", node=start.node,
-                                              heading=round(rng.choice([lk.heading for lk in links]), 1))),
-        web_goals=[OrdersSplit(items=[ItemRef(product_id=p.id, size=size) for p, size in items],
-                               store_ids=[first, second], max_total=budget)],
+        **_split_common(ctx, rng, n, items, start, first, second, budget), intent=intent,
         embodied_goals=[PassedPlace(city="manhattan", node=places[0].node, lat=ends[0].lat, lng=ends[0].lng,
                                     place_id=first),
                         ReachedPlace(city="manhattan", node=places[1].node, lat=ends[1].lat, lng=ends[1].lng,
                                      place_id=second, must_match_order_store=True)],
         step_limit=step_budget("shopping", "hard", len(oracle)),
         oracle=oracle,
-        metadata={"form": "split", "store_nodes": {sid: p.node for sid, p in ctx.store_places.items()},
-                  "shortest_path_m": round(route[(first, second)], 1), "start_lat": ctx.world.node(start.node).lat,
-                  "start_lng": ctx.world.node(start.node).lng, "products": [p.id for p, _ in items],
-                  "sizes": [size for _, size in items], "store_pair": [first, second], "budget": budget,
-                  "pair_costs": costs, "reverse_path_m": round(route[(second, first)], 1),
+        metadata={**_split_metadata(ctx, items, start, first, second, budget, costs, route),
                   "shortcuts": shortcuts},
     )
 
