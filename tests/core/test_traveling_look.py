@@ -5,8 +5,10 @@ not list the landmark's article first more than rarely (before: 18 of 30 hard ta
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 
+from ewa_mcp.envs.street.world import get_world
 from ewa_mcp.evaluation.heuristics.agents import words_of
 from ewa_mcp.websites.wiki import store
 from ewa_mcp.websites.wiki.search import SearchIndex
@@ -34,10 +36,6 @@ def test_no_place_is_described_by_its_own_architectural_style():
     # What a passer-by sees ("a red-brick hall with white trim") and what the article files it under
     # ("Georgian") are different words: a view that names the style hands over the fact a style task asks
     # the agent to look up (a play-tester read "georgian" off a hall on the street).
-    import re
-
-    from ewa_mcp.envs.street.world import get_world
-
     world = get_world()
     named = []
     for poi in world.places.values():

@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import hashlib
 import threading
-import unicodedata
 from pathlib import Path
 from typing import Any
 from urllib.parse import quote
@@ -23,7 +22,7 @@ from starlette.routing import Route
 from ..common import SiteContext, SiteEvents, episode_of, exception_handlers, make_templates
 from .markup import render_body, render_inline
 from .search import MAX_QUERY_CHARS, QueryError, SearchIndex
-from .store import ARTICLES_DIR, ArticleIndex, index, normalize_title
+from .store import ARTICLES_DIR, ArticleIndex, index, normalize_title, strip_accents
 
 SITE_DIR = Path(__file__).resolve().parent
 PAGE_SIZE = 20
@@ -184,8 +183,7 @@ def _int_param(request: Request, name: str, default: int, maximum: int) -> int:
 
 def _words_key(text: str) -> str:
     """Case and accents folded and spaces collapsed; punctuation kept."""
-    decomposed = unicodedata.normalize("NFKD", text)
-    return " ".join("".join(c for c in decomposed if not unicodedata.combining(c)).casefold().split())
+    return " ".join(strip_accents(text).casefold().split())
 
 
 def _infobox_value(value: str, wiki: ArticleIndex, resolve: Any) -> str:

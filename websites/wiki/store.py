@@ -29,13 +29,17 @@ ARTICLES_DIR = Path(__file__).resolve().parent / "articles"
 LINK_RE = re.compile(r"\[\[([^\[\]|\n]+)(?:\|([^\[\]\n]+))?\]\]")
 
 
+def strip_accents(text: str) -> str:
+    """The text with its accents taken off ("Bogotá" -> "Bogota")."""
+    decomposed = unicodedata.normalize("NFKD", text)
+    return "".join(c for c in decomposed if not unicodedata.combining(c))
+
+
 def normalize_title(text: str) -> str:
     """Lookup key for titles, aliases and slugs: case, accents, punctuation and '_'/'-' do not matter.
 
     So "St. Patrick's Cathedral", "st-patricks-cathedral" and "St Patricks Cathedral" all meet."""
-    decomposed = unicodedata.normalize("NFKD", text)
-    stripped = "".join(c for c in decomposed if not unicodedata.combining(c))
-    stripped = stripped.replace("'", "").replace("\u2019", "").replace(".", "")
+    stripped = strip_accents(text).replace("'", "").replace("\u2019", "").replace(".", "")
     return " ".join(re.sub(r"[^0-9a-z]+", " ", stripped.casefold()).split())
 
 
