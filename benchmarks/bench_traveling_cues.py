@@ -129,8 +129,9 @@ def boundary(world, hard: list[dict], walk_m) -> None:
     n = len(hard)
     print(f"the answer's walk ends this far inside the range (m): min {min(inside):.0f}, median "
           f"{statistics.median(inside):.0f}, max {max(inside):.0f}")
+    spread = f"min {min(over):.0f}, median {statistics.median(over):.0f}, max {max(over):.0f}" if over else "none"
     print(f"rivals just beyond (walk over the range by at most 80 m): {len(over)} over {n} tasks; over by (m): "
-          f"min {min(over):.0f}, median {statistics.median(over):.0f}, max {max(over):.0f}")
+          f"{spread}")
     print(f"tasks with a rival just beyond the walk yet within the range as the crow flies: {crow_in} of {n}; "
           f"nearer than the answer as the crow flies: {crow_first} of {n}")
     for name, hit in hits.items():
