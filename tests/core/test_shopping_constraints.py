@@ -156,16 +156,15 @@ def test_nearest_store_in_stock_is_not_the_nearest_seller() -> None:
 
 
 def test_position_in_the_intent_never_gives_the_answer_away() -> None:
-    """Calories (three products named) and pair (three stores named): the answer is named first, second and
-    third, none of them in more than about a third of the tasks (issue 26, principle 3)."""
+    """Calories (three products named): the answer is named first, second and third, none of them in more than
+    about a third of the tasks (issue 26, principle 3). The hard tasks name no stores (the tour form took the
+    named-stores form's numbers)."""
     calories = [t for t in TASKS if t["id"].startswith("shopping-calories-")]
     assert all(len(t["metadata"]["named_products"]) == 3 for t in calories)
     at = [t["metadata"]["named_products"].index(t["metadata"]["product_id"]) for t in calories]
     assert set(at) == {0, 1, 2} and _share(at) <= 0.36, f"the lowest product's places: {at}"
     pairs = [t for t in TASKS if t["id"].startswith("shopping-pair-") and t["metadata"].get("named_stores")]
-    assert all(len(t["metadata"]["named_stores"]) == 3 for t in pairs)
-    at = [t["metadata"]["named_stores"].index(t["metadata"]["store_id"]) for t in pairs]
-    assert set(at) == {0, 1, 2} and _share(at) <= 0.36, f"the answer's places among the named stores: {at}"
+    assert not pairs, [t["id"] for t in pairs]
 
 
 def test_the_named_stores_form_is_replaced_by_the_tour_form() -> None:

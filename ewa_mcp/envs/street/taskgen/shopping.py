@@ -930,9 +930,11 @@ def _store_to_store_task(ctx: Context, rng: Any, n: int, items: list[tuple[Any, 
 
 
 def pair_tasks(ctx: Context) -> list[Task]:
-    """Hard by composition (issue 26, principle 6), in two forms over a seeded shuffle of the ids. 18 of the
-    60 name three stores (``NAMED_TASKS``): three products bought together in one order at one pickup store,
-    the one of the three that has all three in stock within a budget for the three (``named_draw``). The other
+    """Hard by composition (issue 26, principle 6), in forms over a seeded shuffle of the ids. 18 of the 60
+    (``TOUR_TASKS``) are the tour form (``tour_tasks``): a list of four bought at two or three stores within a
+    budget, on the shortest walk past them to an end point. Numbers the tour pool cannot fill (none now) name
+    three stores (``NAMED_TASKS``): three products bought together in one order at one pickup store, the one
+    of the three that has all three in stock within a budget for the three (``named_draw``). The other
     42 are the split form (``split_tasks``): a list no single store has in stock, two orders at two stores
     within one budget, on the shortest walk past one store to the other. Every number the agent needs is on
     the product pages and the map (the checkout shows one chosen store's total at a time). Ids keep the
