@@ -1162,9 +1162,9 @@ def tour_shortcuts(ctx: Context, routes: dict[tuple[str, ...], float], costs: di
     to_end = {sid: legs(ctx.store_places[sid].node, end.node) for sid in ctx.stores}
     pairs = [r for r in within if len(r) == 2]
     if pairs:
-        near_end = min({set_key(r) for r in pairs}, key=lambda k: sum(to_end[s] for s in k.split("|")))
+        near_end = min(sorted({set_key(r) for r in pairs}), key=lambda k: sum(to_end[s] for s in k.split("|")))
         out["pair nearest the end"] = tuple(sorted(near_end.split("|"), key=lambda s: -to_end[s]))
-        near_start = min({set_key(r) for r in pairs}, key=lambda k: sum(from_start[s] for s in k.split("|")))
+        near_start = min(sorted({set_key(r) for r in pairs}), key=lambda k: sum(from_start[s] for s in k.split("|")))
         out["pair nearest the start"] = tuple(sorted(near_start.split("|"), key=lambda s: from_start[s]))
     cheapest = min(costs, key=lambda k: (costs[k], k))
     out["cheapest plan"] = shortest(r for r in routes if set_key(r) == cheapest)
@@ -1191,7 +1191,7 @@ def tour_shortcuts(ctx: Context, routes: dict[tuple[str, ...], float], costs: di
         return sum(haversine_m(a.lat, a.lng, b.lat, b.lng) for a, b in zip(way, way[1:]))
 
     out["straight-line best walk"] = shortest(within, key=line)
-    nearest = min({r[0] for r in within}, key=lambda sid: from_start[sid])
+    nearest = min(sorted({r[0] for r in within}), key=lambda sid: from_start[sid])
     out["nearest store first"] = shortest(r for r in within if r[0] == nearest)
     out["end point not read"] = shortest(within, key=lambda r: routes[r] - to_end[r[-1]])
     out["budget not read"] = shortest(routes)
