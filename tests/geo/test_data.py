@@ -145,3 +145,16 @@ def test_every_city_article_links_its_climate_to_an_article_that_lists_the_city(
         assert climate is not None and climate.category == "Climates", (city.name, link.group(1))
         assert f"[[{city.name}]]" in climate.body, (city.name, climate.title)
         assert "## What the weather looks like" in climate.body
+
+
+def test_a_city_whose_article_is_not_the_geo_groups_still_states_its_conventions():
+    # New York City's article comes from the street world's wiki; its geo location is hard, so without
+    # the conventions block (trees, climate, yellow taxicabs) the answer could not be read from the wiki.
+    from ewa_mcp.envs.geo.articles import TAKEN_HEADING, taken_city_sections
+
+    blocks = taken_city_sections(store.ARTICLES_DIR)
+    assert any(path.name == "new-york-city.md" for path in blocks)
+    for path, block in blocks.items():
+        assert block.startswith(TAKEN_HEADING) and "Street trees:" in block
+        assert path.read_text(encoding="utf-8").endswith("\n\n" + block), (
+            f"{path} lacks its city's conventions; run python -m ewa_mcp.envs.geo.articles")

@@ -461,7 +461,40 @@ def write_articles(out_dir: Path, articles_root: Path | None = None) -> int:
     return written
 
 
+TAKEN_HEADING = "## What the city looks like"
+
+
+def taken_city_sections(articles_root: Path) -> dict[Path, str]:
+    """The conventions block each article outside the geo group must end with when it already holds a
+    location city's title (New York City, from the street world's wiki): write_articles skips such a
+    city, and without the block its article would not state what the city's views show, so a hard
+    location there could not be told from its rivals. Path -> the block, from TAKEN_HEADING on."""
+    from ewa_mcp.websites.wiki.store import read_articles
+
+    articles, _problems = read_articles(articles_root)
+    by_key = {_key(a.title): a for a in articles if a.group != GROUP}
+    by_city: dict[str, list[Location]] = defaultdict(list)
+    for loc in LOCATIONS_LIST:
+        by_city[loc.city_key].append(loc)
+    blocks: dict[Path, str] = {}
+    for key in sorted(by_city):
+        article = by_key.get(_key(CITIES[key].name))
+        if article is not None:
+            blocks[Path(article.path)] = "\n\n".join(_paragraphs(_city_sections(CITIES[key], by_city[key]))) + "\n"
+    return blocks
+
+
+def write_taken_sections(articles_root: Path) -> int:
+    """Replace (or add) the conventions block at the end of each article taken_city_sections names."""
+    for path, block in taken_city_sections(articles_root).items():
+        text = path.read_text(encoding="utf-8")
+        head = text.split("\n" + TAKEN_HEADING, 1)[0].rstrip("\n")
+        path.write_text(head + "\n\n" + block, encoding="utf-8")
+    return len(taken_city_sections(articles_root))
+
+
 if __name__ == "__main__":
     from ewa_mcp.websites.wiki.store import ARTICLES_DIR
 
     print(f"wrote {write_articles(ARTICLES_DIR / GROUP)} geolocation articles")
+    print(f"wrote the conventions of {write_taken_sections(ARTICLES_DIR)} cities into articles outside the geo group")

@@ -397,6 +397,7 @@ CITIES_LIST: list[City] = [
     # ------------------------------------------------------------------ North America
     _("new-york", 5128581, "New York City", "US", "humid_subtropical", "212", "NEW YORK",
       aliases=("New York", "NYC", "Manhattan", "NY"), sign=NYC_SIGN, transport=("taxi:yellow",),
+      trees=("ginkgo", "linden", "plane"),
       about="Largest city of the United States; yellow cabs, area code 212 for Manhattan, plates NEW YORK.",
       places={"Times Square": "a bow-tie-shaped plaza where Broadway crosses Seventh Avenue, walled with giant "
                               "illuminated billboards and screens"}),
@@ -420,7 +421,7 @@ CITIES_LIST: list[City] = [
       langs=("es-la", "en-us"),
       about="Florida city with a large Cuban community in Little Havana (Calle Ocho); area code 305."),
     _("washington", 4140963, "Washington", "US", "humid_subtropical", "202", "DISTRICT OF COLUMBIA",
-      aliases=("Washington, D.C.", "Washington DC", "Washington D.C."),
+      aliases=("Washington, D.C.", "Washington DC", "Washington D.C."), trees=("ginkgo", "linden", "maple", "plane"),
       about="Capital of the United States, laid out on a grid cut by broad diagonal avenues; a height limit keeps "
             "its buildings low, so the domes and monuments of the federal city dominate the skyline."),
     _("austin", 4671654, "Austin", "US", "humid_subtropical", "512", "TEXAS",

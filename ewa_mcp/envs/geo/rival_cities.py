@@ -57,10 +57,14 @@ RIVAL_CITIES_LIST: list[City] = [
       transport=("taxi:yellow",), about="Capital of Santander department, called the city of parks."),
     _("cali", 3687925, "Cali", "CO", "tropical", "602", "CALI", trees=EJP, transport=("taxi:yellow",),
       about="Capital of Valle del Cauca in the Cauca valley."),
-    # New York (humid subtropical, camphor/palm/plane, yellow taxis): Austin and Washington have none.
+    # New York (humid subtropical, ginkgo/linden/plane, yellow taxis): Washington has its trees and no taxis,
+    # Baltimore its sky and taxis but not its trees, Minneapolis its trees and taxis under another sky.
     _("baltimore", 4347778, "Baltimore", "US", "humid_subtropical", "410", "MARYLAND", trees=LMP,
       transport=("taxi:yellow",),
       about="Port city of Maryland on Chesapeake Bay."),
+    _("minneapolis", 5037649, "Minneapolis", "US", "continental", "612", "MINNESOTA",
+      trees=("ginkgo", "linden", "maple", "plane"), transport=("taxi:yellow",),
+      about="Largest city of Minnesota, on the Mississippi beside its twin, Saint Paul."),
     _("san-diego", 5391811, "San Diego", "US", "mediterranean", "619", "CALIFORNIA", trees=CPP,
       transport=("taxi:yellow",),
       about="Pacific port city of southern California near the Mexican border."),
