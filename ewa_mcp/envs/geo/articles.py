@@ -479,7 +479,7 @@ def taken_city_sections(articles_root: Path) -> dict[Path, str]:
     blocks: dict[Path, str] = {}
     for key in sorted(by_city):
         article = by_key.get(_key(CITIES[key].name))
-        if article is not None:
+        if article is not None and article.path is not None:
             blocks[Path(article.path)] = "\n\n".join(_paragraphs(_city_sections(CITIES[key], by_city[key]))) + "\n"
     return blocks
 
