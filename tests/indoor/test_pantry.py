@@ -6,6 +6,7 @@ oracle passes, and doing everything and each rival's outcome fail the kitchen go
 
 from __future__ import annotations
 
+import re
 from collections import Counter
 from pathlib import Path
 
@@ -40,9 +41,11 @@ def test_the_form_takes_a_share_of_the_hard_ids_and_both_old_forms_stay(hard: li
     assert forms["two_dishes"] > 0 and forms[None] > 0
     assert 15 <= len(chosen) <= forms[None] // 2
     ids = [int(t.id.rsplit("-", 1)[1]) for t in chosen]
-    assert min(ids) < len(ids) < 2 * len(ids) < max(ids)  # spread over the ids (a seeded shuffle), not a block
+    assert len({(i - 1) * 4 // len(hard) for i in ids}) == 4  # in every quarter of the ids (a seeded shuffle)
     assert len({t.metadata["name_word"] for t in chosen}) >= 8
     assert max(Counter(t.metadata["name_word"] for t in chosen).values()) <= pantry.PER_WORD
+    # never the same dish in the same kitchen twice (asked by another word of its name)
+    assert len({(t.metadata["recipe_id"], t.start.embodied.scene) for t in chosen}) == len(chosen)
 
 
 def test_exactly_one_recipe_of_the_word_needs_only_foods_the_kitchen_holds(chosen: list) -> None:
@@ -54,6 +57,8 @@ def test_exactly_one_recipe_of_the_word_needs_only_foods_the_kitchen_holds(chose
         makeable = [r["id"] for r in listed if pantry.page_foods(r) <= held]
         assert makeable == [meta["recipe_id"]], task.id
         assert listed[0]["id"] != meta["recipe_id"]  # never the first listed: position does not pass
+        # the dish's own name has the word whole (the search also lists "Crisp" for "crisps")
+        assert re.search(rf"\b{meta['name_word']}\b", meta["recipe_name"].lower()), task.id
         assert set(meta["rivals_lack"]) == {r["id"] for r in listed} - {meta["recipe_id"]}
         for rival_id, missing in meta["rivals_lack"].items():
             assert missing and set(missing) == pantry.page_foods(catalog.by_id[rival_id]) - held

@@ -72,6 +72,8 @@ def choice(word: str, scene: str, catalog: Any) -> tuple[dict[str, Any], dict[st
     if len(makeable) != 1 or makeable[0]["id"] == listed[0]["id"]:
         return None
     target = makeable[0]
+    if not re.search(rf"\b{re.escape(word)}\b", target["name"].lower()):
+        return None  # the site's search also lists "Crisp" for "crisps": the dish itself has the word, whole
     if missing_equipment(target, inventory) or not needed_foods(recipe_ops(target)) or not check_recipe_executable(scene, recipe_ops(target))[0]:
         return None
     lacks = {r["id"]: sorted(page_foods(r) - inventory["food"]) for r in listed if r["id"] != target["id"]}
@@ -147,6 +149,7 @@ def with_pantry(tasks: list[Task]) -> list[Task]:
     queues = candidates(catalog)
     used = Counter[int]()
     replaced: dict[str, Task] = {}
+    seen: set[tuple[str, str]] = set()
     turn = 0
     for task_id in chosen:
         made = None
@@ -156,8 +159,11 @@ def with_pantry(tasks: list[Task]) -> list[Task]:
             while made is None and queues[i] and used[i] < PER_WORD:
                 word, scene = queues[i].pop(0)
                 made = make_pantry_task(task_id, word, scene, catalog)
+                if made is not None and (made.metadata["recipe_id"], scene) in seen:
+                    made = None  # the same dish in the same kitchen, asked by another word: nothing new
             if made is not None:
                 used[i] += 1
+                seen.add((made.metadata["recipe_id"], made.metadata["scene"]))
                 break
         if made is None:
             break  # no word has a kitchen left: the remaining ids keep their form
