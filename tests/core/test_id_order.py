@@ -44,9 +44,9 @@ def answer_keys(task: dict[str, Any]) -> dict[str, Any]:
             keys[f"pair{i}"] = tuple(goal["store_ids"])
         elif goal["kind"] == "recipe_completed":
             keys["recipe"] = goal["recipe_id"]
-        elif goal["kind"] == "recipes_completed":  # two dishes: the pair, and the form itself
+        elif goal["kind"] == "recipes_completed":  # two dishes (the pair), or the one the kitchen can make
             keys["recipe"] = tuple(sorted(goal["recipe_ids"]))
-            keys["form"] = "two_dishes"
+            keys["form"] = "two_dishes" if len(goal["recipe_ids"]) == 2 else "pantry"
         elif goal["kind"] == "page_visited":
             keys["page"] = goal["path_prefix"]
         elif goal["kind"] == "directions_shown":

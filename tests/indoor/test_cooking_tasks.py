@@ -105,8 +105,8 @@ def test_difficulty_follows_the_template_and_enough_are_hard(tasks, every_task):
     assert kinds["hard"] >= 0.15 * len(every_task), kinds
     catalog = load_catalog()
     for task in tasks:
-        if task.difficulty != "hard":
-            continue
+        if task.difficulty != "hard" or task.metadata.get("form") == "pantry":
+            continue  # the recipe the kitchen can make buys nothing (tests/indoor/test_pantry.py)
         recipe = load_catalog().by_id.get(task.metadata["recipe_id"])
         assert len(task.metadata["buy"]) == 2 and "Your kitchen has no" not in task.intent, task.id  # not named
         if task.metadata["telling_step"]:

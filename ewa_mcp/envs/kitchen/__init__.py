@@ -23,7 +23,7 @@ KITCHEN = EnvironmentSpec("kitchen", "embodied", f"{__name__}.env:KitchenEnviron
                           options=f"{__name__}.options:KitchenOptions")
 
 DOMAINS = [
-    Domain("cooking", (BROWSER, KITCHEN), generator=f"{__name__}.taskgen.two_dishes:generate",
+    Domain("cooking", (BROWSER, KITCHEN), generator=f"{__name__}.taskgen.pantry:generate",
            goal_kinds=(*WEB_GOALS, "object_state", "object_in", "cooked_with", "holds_only"),
            checks={**WEB_CHECKS, "object_state": f"{__name__}.checks:object_state",
                    "object_in": f"{__name__}.checks:object_in",
