@@ -73,6 +73,13 @@ class WorldAdapter:
         results = self.search(text, city, 8)
         named = _NAME_AND_ADDRESS.fullmatch(text)
         if not results and named:
+            # "Pennsylvania Station (New York City)", the way the wiki titles a place: the bracket names the
+            # city to look in.
+            hinted = {alias: key for key in self.cities() for alias in self._city_aliases(key)}
+            if city is None and named.group(2).casefold() in hinted:
+                found = self.resolve(named.group(1), hinted[named.group(2).casefold()])
+                if found.place is not None or found.choices:
+                    return found
             # "Old South Church (645 Boylston St)", the way task intents and place pages write a place: the name,
             # else the address in brackets, names it.
             for part in named.groups():
@@ -83,9 +90,7 @@ class WorldAdapter:
             # "6th Ave between W 40th St & W 42nd St", "Broadway & 6th Ave at W 35th St": an address written the
             # way a place's own page writes it (a block or a corner with a cross street), which the street search
             # does not parse; the place that has it, when one does.
-            wanted = " ".join(text.split()).casefold()
-            owners = [p for p in self.world.places.values() if p.address and (city is None or p.city == city)
-                      and " ".join(p.address.split()).casefold() == wanted]
+            owners = self.world.listed_at(text, city)
             if len(owners) == 1:
                 return Resolution(owners[0])
         if not results and city is None:

@@ -167,6 +167,9 @@ BLOCK_RULES = {"manhattan": manhattan_block, "philadelphia": philadelphia_block}
 
 def fold(text: str) -> str:
     """Case-, accent- and punctuation-insensitive form for matching names."""
+    # Dashes part words ("14 St–Union Square" is "14 St-Union Square"); the ASCII fold would drop an en
+    # dash and run the words together.
+    text = re.sub("[\u2010-\u2015\u2212]", " ", text)
     text = unicodedata.normalize("NFKD", text).encode("ascii", "ignore").decode()
     text = text.lower().replace("&", " and ").replace("'", "").replace("’", "")
     return " ".join("".join(c if c.isalnum() else " " for c in text).split())

@@ -68,9 +68,17 @@ class World:
                     self.places[p["id"]] = Place(id=p["id"], name=p["name"], kind=p.get("kind", "address"),
                                                  city=graph.city, address=p.get("address", p["name"]),
                                                  lat=p["lat"], lng=p["lng"], node=p["node"])
+        # The address a place is listed at (its wiki article gives it too), before anchoring moves it to the
+        # street its node stands on: "1501 Broadway" must still find the Paramount Building.
+        listed = {pid: fold(p.address) for pid, p in self.places.items()}
         anchor_addresses(self.places, self.cities_by_name)
+        # Other names a place goes by (its wiki article's title, "New York Public Library Main Branch").
+        aliases = {p["id"]: tuple(p.get("aliases", ())) for p in raw_pois}
         self._folded = {pid: fold(f"{p.name} {p.kind}") for pid, p in self.places.items()}
+        self._folded_aliases = {pid: tuple(fold(f"{a} {p.kind}") for a in aliases.get(pid, ()))
+                                for pid, p in self.places.items()}
         self._folded_address = {pid: fold(p.address) for pid, p in self.places.items()}
+        self._folded_listed = {pid: text for pid, text in listed.items() if text != self._folded_address[pid]}
         self.places_at: dict[str, list[Place]] = {}
         for p in self.places.values():
             self.places_at.setdefault(p.node, []).append(p)
@@ -197,7 +205,7 @@ class World:
         folded = fold(query)
         for pid in sorted(self.places):
             p = self.places[pid]
-            if p.city in cities and (self._folded_address[pid] == folded or
+            if p.city in cities and (self._folded_address[pid] == folded or self._folded_listed.get(pid) == folded or
                                      same_address(p.address, number, street, self.cities_by_name[p.city].aliases)):
                 key = (p.city, self._folded_address[pid])
                 if key in seen:
@@ -236,23 +244,35 @@ class World:
                              address=address, lat=g.lat[i], lng=g.lng[i], node=g.ids[i]))
         return out
 
+    def listed_at(self, text: str, city: str | None = None) -> list[Place]:
+        """The places whose address, as listed or as anchored, is ``text`` written out in full
+        ("Quincy Market, S Market St"), which the address search does not parse."""
+        wanted = fold(text)
+        return [p for pid, p in sorted(self.places.items()) if (city is None or p.city == city)
+                and wanted and wanted in (self._folded_address[pid], self._folded_listed.get(pid))]
+
     def _search_names(self, query: str, cities: list[str]) -> list[Place]:
         q = fold(query)
         tokens = q.split()
         scored = []
-        for pid, text in self._folded.items():
+        for pid, name in self._folded.items():
             p = self.places[pid]
             if p.city not in cities:
                 continue
-            # Name and kind only: matching address words would turn an address into the name of what is there.
-            words = text.split()
-            if q in text:
-                score = 3.0 + (1.0 if text.startswith(q) else 0.0) + len(q) / max(1, len(text))
-            elif all(any(w.startswith(t) for w in words) for t in tokens):
-                score = 1.0 + sum(t in words for t in tokens) / len(tokens)
-            else:
-                continue
-            scored.append((-score, p.name, pid))
+            # Name (or another name) and kind only: matching address words would turn an address into the
+            # name of what is there.
+            best = None
+            for text in (name, *self._folded_aliases[pid]):
+                words = text.split()
+                if q in text:
+                    score = 3.0 + (1.0 if text.startswith(q) else 0.0) + len(q) / max(1, len(text))
+                elif all(any(w.startswith(t) for w in words) for t in tokens):
+                    score = 1.0 + sum(t in words for t in tokens) / len(tokens)
+                else:
+                    continue
+                best = score if best is None else max(best, score)
+            if best is not None:
+                scored.append((-best, p.name, pid))
         return [self.places[pid] for _, _, pid in sorted(scored)]
 
     # ------------------------------------------------------------ directions
