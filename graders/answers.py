@@ -151,7 +151,12 @@ def check_geo_answer(check: GeoAnswer, submission: dict[str, Any] | None) -> tup
     met = result.get("all_levels")
     if not isinstance(met, bool):
         met = all(result.get(level) is True for level in ("continent", "country", "city", "street"))
-    note = None if submission else "no location was submitted"
+    graded = result.get("graded_levels") or ("continent", "country", "city", "street")
+    wrong = [level for level in graded if result.get(level) is not True]
+    # Name the levels that missed: a verdict that says only "not every level" leaves the player and the
+    # researcher to dig the per-level detail out of the record.
+    note = ("no location was submitted" if not submission
+            else f"wrong at: {', '.join(wrong)}" if wrong and not met else None)
     return ConditionResult(side="answer", kind=check.kind, description=description, met=met,
                            detail={k: result.get(k) for k in ("continent", "country", "city", "street", "distance_km")},
                            note=note), result

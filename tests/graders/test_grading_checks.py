@@ -363,6 +363,19 @@ def test_geolocation_is_delegated_to_the_geo_grader(tmp_path: Path, monkeypatch:
     assert result.geolocation is not None and result.geolocation["city"] is True
 
 
+def test_geolocation_verdict_names_the_levels_that_missed(tmp_path: Path) -> None:
+    task = make_task("geo-2", "geolocation", **GEO_TASK)
+    result = grade_episode(EpisodeBuilder(tmp_path, task).finish(submission={
+        "lat": 48.85, "lng": 2.29, "continent": "Europe", "country": "France", "city": "Lyon",
+        "street": "Rue de Rivoli"}).directory)
+    (condition,) = [c for c in result.conditions if c.side == "answer"]
+    assert condition.met is False and condition.note == "wrong at: city, street"
+    right = grade_episode(EpisodeBuilder(tmp_path, task).finish(submission={
+        "lat": 48.85, "lng": 2.29, "continent": "Europe", "country": "France", "city": "Paris",
+        "street": "Avenue Gustave Eiffel"}).directory)
+    assert [c.note for c in right.conditions if c.side == "answer"] == [None]
+
+
 def test_geolocation_aggregates_and_table_come_from_the_geo_grader(tmp_path: Path,
                                                                     monkeypatch: pytest.MonkeyPatch) -> None:
     from ewa_mcp.graders import grade_run, render_report
