@@ -22,6 +22,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from ewa_mcp.envs.street.taskgen.traveling import cue_value, landmarks_of  # noqa: E402
+from ewa_mcp.geometry import haversine_m  # noqa: E402
 from ewa_mcp.envs.street.world import get_world  # noqa: E402
 from ewa_mcp.websites.wiki import store as wiki  # noqa: E402
 from ewa_mcp.websites.wiki.search import SearchIndex  # noqa: E402
@@ -60,9 +61,81 @@ def main() -> int:
     print(f"landmarks sharing the fact (the answer included, X aside): median {statistics.median(sharing)}, "
           f"min {min(sharing)}")
     print(f"X itself within the range: {via_in_range} of {n}")
+    boundary(world, hard, walk_m)
     if pairs:
         two_facts(world, pairs, walk_m)
     return 0
+
+
+def local_m(world, a: str, b: str) -> tuple[float, float]:
+    """(east, north) metres from node ``a`` to node ``b`` (flat, fine at a walk's scale)."""
+    na, nb = world.node(a), world.node(b)
+    north = haversine_m(na.lat, na.lng, nb.lat, na.lng) * (1 if nb.lat >= na.lat else -1)
+    east = haversine_m(na.lat, na.lng, na.lat, nb.lng) * (1 if nb.lng >= na.lng else -1)
+    return east, north
+
+
+def boundary(world, hard: list[dict], walk_m) -> None:
+    """Where the answer and its rivals (other places sharing the fact, X aside) stand against the range
+    (docs/verified.md, "Traveling hard: the choice at the range's edge"), and how often each shortcut a
+    player could take instead of measuring walks lands on the answer."""
+    index = SearchIndex(wiki.load_articles())
+    inbound: Counter = Counter()
+    for article in wiki.load_articles():
+        for target, _ in {(t, "") for t, _ in wiki.links_in(article.body)}:
+            found = wiki.find(target)
+            if found is not None and found.slug != article.slug:
+                inbound[found.slug] += 1
+    inside, over, crow_in, crow_first = [], [], 0, 0
+    hits: Counter = Counter()
+    for task in hard:
+        cue, start = task["metadata"]["cue"], task["start"]["embodied"]["node"]
+        limit, target = cue["range_m"], world.places[task["metadata"]["poi_id"]]
+        places = [p for p in world.places.values() if p.city == target.city and p.id != cue["via"]
+                  and wiki.by_poi_id(p.id) is not None]
+        sharing = [p for p in places if cue_value(cue["key"], p) == cue["value"]]
+        here = world.node(start)
+
+        def crow(p) -> float:
+            n = world.node(p.node)
+            return haversine_m(here.lat, here.lng, n.lat, n.lng)
+
+        def grid(p) -> float:  # a guess from addresses on a street grid: blocks east-west plus north-south
+            east, north = local_m(world, start, p.node)
+            return abs(east) + abs(north)
+
+        inside.append(limit - walk_m(start, target.node))
+        rivals = [p for p in sharing if p.id != target.id and walk_m(start, p.node) > limit]
+        near = [p for p in rivals if walk_m(start, p.node) <= limit + 80]
+        over += [walk_m(start, p.node) - limit for p in near]
+        crow_in += any(crow(p) <= limit for p in near)
+        crow_first += any(crow(p) < crow(target) for p in near)
+        hits["nearest sharing the fact as the crow flies"] += min(sharing, key=crow).id == target.id
+        hits["nearest sharing the fact by an address (grid) guess"] += min(sharing, key=grid).id == target.id
+        hits["place nearest the start as the crow flies"] += min(places, key=crow).id == target.id
+        hits["most-linked article sharing the fact"] += \
+            max(sharing, key=lambda p: (inbound[wiki.by_poi_id(p.id).slug], p.id)).id == target.id
+        ids = {p.id for p in sharing}
+        if cue["key"] == "year_built":  # the years of the decade searched one by one, hits read in order
+            decade = int(cue["value"][:4])
+            queries = [str(year) for year in range(decade, decade + 10)]
+        else:
+            queries = [f"{cue['value']} {world.city(target.city).name.split(' (')[0].split(',')[0]}"]
+        order = [a.poi_id for q in queries for h in index.search(q, 20)[0]
+                 if (a := wiki.find(h.slug)) is not None and a.poi_id in ids]
+        hits["first hit of a year (or style) search"] += bool(order) and order[0] == target.id
+        in_crow = [pid for pid in order if crow(world.places[pid]) <= limit]
+        hits["first hit of that search within the range as the crow flies"] += bool(in_crow) and in_crow[0] == target.id
+    n = len(hard)
+    print(f"the answer's walk ends this far inside the range (m): min {min(inside):.0f}, median "
+          f"{statistics.median(inside):.0f}, max {max(inside):.0f}")
+    spread = f"min {min(over):.0f}, median {statistics.median(over):.0f}, max {max(over):.0f}" if over else "none"
+    print(f"rivals just beyond (walk over the range by at most 80 m): {len(over)} over {n} tasks; over by (m): "
+          f"{spread}")
+    print(f"tasks with a rival just beyond the walk yet within the range as the crow flies: {crow_in} of {n}; "
+          f"nearer than the answer as the crow flies: {crow_first} of {n}")
+    for name, hit in hits.items():
+        print(f"shortcut '{name}' is the answer: {hit} of {n} ({100 * hit / n:.0f} %)")
 
 
 def two_facts(world, pairs: list[dict], walk_m) -> None:

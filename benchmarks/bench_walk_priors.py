@@ -56,7 +56,9 @@ def hard_cues(store: TaskStore) -> None:
     from ewa_mcp.websites.shop import catalog
 
     cues: Counter[str] = Counter()
-    pair = [t for t in store.all("shopping") if t.difficulty == "hard" and t.metadata.get("form") != "split"]
+    pair = [t for t in store.all("shopping") if t.difficulty == "hard" and t.metadata.get("form") == "named"]
+    if not pair:
+        return  # the tour form took the named form's numbers (tour_rules)
     for t in pair:
         meta, start = t.metadata, t.start.embodied.node
         by_walk = sorted(meta["store_nodes"], key=lambda sid: walk_m(start, meta["store_nodes"][sid]))
@@ -179,6 +181,31 @@ def end_point_rules(store: TaskStore) -> None:
               f"{100 * hits / max(len(split), 1):.0f} % of the split form)")
 
 
+def tour_rules(store: TaskStore) -> None:
+    """Shopping hard, the tour form (two or three stores, any order, to an end point E): how often each
+    shortcut walks the graded plan (its stores in its order). The picks are the generator's (task metadata);
+    tests/core/test_shopping_tour.py works them out again from the catalogue and the map."""
+    tours = [t for t in store.all("shopping") if t.metadata.get("form") == "tour"]
+    if not tours:
+        return
+    rules: Counter[str] = Counter()
+    for t in tours:
+        for rule, pick in t.metadata["shortcuts"].items():
+            rules[rule] += pick == t.metadata["stores"]
+    margins = sorted(t.metadata["margin_m"] for t in tours)
+    within = sorted(t.metadata["walks_within"] for t in tours)
+    threes = sum(len(t.metadata["stores"]) == 3 for t in tours)
+    print(f"\nshopping hard, tour form ({len(tours)} tasks, {threes} answered by three stores; {within[0]} to "
+          f"{within[-1]} walks within the budget; the answer beats the next by {margins[0]:.0f} to "
+          f"{margins[-1]:.0f} m): the shortcut walks the graded plan")
+    for rule, hits in rules.items():
+        print(f"  {rule}: {hits} of {len(tours)} ({100 * hits / len(tours):.0f} %)")
+    plans = Counter(" > ".join(t.metadata["stores"]) for t in tours)
+    stores = Counter(s for t in tours for s in t.metadata["stores"])
+    print(f"  plans: {len(plans)} distinct; stores in the answers: " +
+          ", ".join(f"{k} {v}" for k, v in stores.most_common()))
+
+
 def main() -> int:
     store = TaskStore([ROOT / "tasks"])
     shortest_form(store)
@@ -234,6 +261,7 @@ def main() -> int:
     hard_cues(store)
     split_rules(store)
     end_point_rules(store)
+    tour_rules(store)
     sizes = Counter(t.difficulty or "-" for t in store.all("shopping"))
     for difficulty in ("easy", "medium", "hard"):
         rows = [c for (d, _), c in cells.items() if d == difficulty]

@@ -77,17 +77,17 @@ def test_a_traveling_address_is_read_from_the_intent(store) -> None:
 
 
 def test_store_rules_pick_what_they_say(store) -> None:
-    t = task(store, "shopping-pair-001")  # a named-stores task
+    # a hard list that several stores list whole (stock aside): the rules choose among them, none named
+    t = next(t for t in sorted(store.all("shopping"), key=lambda t: t.id) if t.id.startswith("shopping-pair-")
+             and len(sellers(shopping_items(t.intent)[0])) >= 2)
     items, answer = shopping_items(t.intent)
     assert [(p.id, s) for p, s in items] == list(zip(t.metadata["products"], t.metadata["sizes"], strict=True))
-    assert answer is None
+    assert answer is None and not named_stores(t.intent)
     start = t.start.embodied.node
-    candidates = [sid for sid in sellers(items) if sid in named_stores(t.intent)]
-    assert len(candidates) == 3
+    candidates = sellers(items)
     cheapest = pick_store("cheapest", candidates, items, start, t.step_limit)
     assert total_price(items, cheapest) == min(total_price(items, sid) for sid in candidates)
-    named = t.metadata["named_stores"]  # the generator's own sums, over the three stores the intent names
-    assert cheapest == min(named, key=t.metadata["totals"].get)
+    assert len({total_price(items, sid) for sid in candidates}) >= 2  # the rule had a choice to make
     nearest = pick_store("nearest", candidates, items, start, t.step_limit)
     assert walk_m(start, nearest) == min(walk_m(start, sid) for sid in candidates)
     by_limit = pick_store("step-limit", candidates, items, start, t.step_limit)

@@ -185,6 +185,36 @@ _ALL: list[Language] = [
 
 LANGUAGES: dict[str, Language] = {lang.code: lang for lang in _ALL}
 
+# Where one language's countries write a shop kind differently: {country ISO code: {language code: {kind:
+# words}}}. A shop in that country picks one of its own words (scene.py), never another country's: a
+# corner grocery is an "almacén" in Buenos Aires and "abarrotes" in Mexico City, a pharmacy a "droguería"
+# in Bogotá. Kinds and languages not listed keep the language's word.
+COUNTRY_WORDS: dict[str, dict[str, dict[str, tuple[str, ...]]]] = {
+    "MX": {"es-la": {"grocery": ("Abarrotes", "Tienda", "Miscelánea")}},
+    "GT": {"es-la": {"grocery": ("Tienda", "Abarrotería")}},
+    "CU": {"es-la": {"grocery": ("Bodega", "Mercado")}},
+    "CR": {"es-la": {"grocery": ("Pulpería", "Minisúper")}},
+    "PA": {"es-la": {"grocery": ("Minisúper", "Tienda")}},
+    "DO": {"es-la": {"grocery": ("Colmado",)}},
+    "AR": {"es-la": {"grocery": ("Almacén", "Kiosco", "Despensa")}},
+    "CL": {"es-la": {"grocery": ("Almacén", "Minimarket")}},
+    "PE": {"es-la": {"grocery": ("Bodega", "Abarrotes"), "pharmacy": ("Botica", "Farmacia")}},
+    "CO": {"es-la": {"grocery": ("Tienda", "Granero"), "pharmacy": ("Droguería",)}},
+    "EC": {"es-la": {"grocery": ("Tienda", "Víveres")}},
+    "BO": {"es-la": {"grocery": ("Tienda", "Abarrotes")}},
+    "UY": {"es-la": {"grocery": ("Almacén", "Autoservicio")}},
+    "VE": {"es-la": {"grocery": ("Bodega", "Abasto")}},
+    "PY": {"es-la": {"grocery": ("Despensa", "Almacén")}},
+}
+
+
+def shop_words(country: str, code: str, kind: str) -> tuple[tuple[str, str], ...]:
+    """The (native, latin) words a shop of this kind may show in this language in this country."""
+    own = COUNTRY_WORDS.get(country, {}).get(code, {}).get(kind)
+    if own:
+        return tuple((w, w) for w in own)  # every country-specific word so far is in Latin script
+    return (language(code).words[kind],)
+
 
 def language(code: str) -> Language:
     try:

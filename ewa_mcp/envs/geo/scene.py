@@ -30,7 +30,7 @@ from .cities import City
 from .countries import Country, StreetSignStyle
 from .hardness import is_hard
 from .graph import Standpoint, build_graph
-from .languages import SHOP_KINDS, language
+from .languages import SHOP_KINDS, shop_words
 from .locations import Landmark, Location
 from .plates import PlateStyle
 from .seeding import rng_for
@@ -151,6 +151,13 @@ def _phone(rng, country: Country, city: City) -> str:
     return "".join(str(rng.randrange(10)) if ch == "#" else ch for ch in template)
 
 
+def _shop_word(loc: Location, code: str, kind: str, slot: str) -> tuple[str, str]:
+    """The word a shop of this kind shows in this language here: one of the country's own (languages.
+    COUNTRY_WORDS), chosen by a generator of its own so that the view's other draws stay as they were."""
+    options = shop_words(loc.country.iso, code, kind)
+    return options[0] if len(options) == 1 else rng_for(loc.id, "shop-word", code, kind, slot).choice(options)
+
+
 def _shop_signs(rng, loc: Location, slots: list[str], with_phone: bool) -> tuple[ShopSign, ...]:
     city, country = loc.city, loc.country
     langs = city.langs or country.langs
@@ -158,12 +165,10 @@ def _shop_signs(rng, loc: Location, slots: list[str], with_phone: bool) -> tuple
     phone_slot = rng.randrange(len(slots)) if with_phone else -1
     signs = []
     for i, (slot, kind) in enumerate(zip(slots, kinds, strict=True)):
-        primary = language(langs[0])
-        lines = [_text(*primary.words[kind])]
+        lines = [_text(*_shop_word(loc, langs[0], kind, slot))]
         # Bilingual places write a second language under the first on most signs.
         if len(langs) > 1 and rng.random() < 0.7:
-            second = language(langs[rng.randrange(1, len(langs))])
-            word = second.words[kind]
+            word = _shop_word(loc, langs[rng.randrange(1, len(langs))], kind, slot)
             if word[0] != lines[0].native:
                 lines.append(_text(*word))
         bg, fg = SHOP_COLOURS[rng.randrange(len(SHOP_COLOURS))]

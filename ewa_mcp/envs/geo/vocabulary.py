@@ -62,13 +62,17 @@ def distinctive_view_words() -> frozenset[str]:
 @lru_cache(maxsize=1)
 def sign_words() -> frozenset[str]:
     """Every word a shop sign in any language can show (the views quote them; the wiki names the language)."""
-    from .languages import LANGUAGES
+    from .languages import COUNTRY_WORDS, LANGUAGES
 
     out: set[str] = set()
     english: set[str] = set()
     for lang in LANGUAGES.values():
         for native, latin in lang.words.values():
             (english if lang.code.startswith("en") else out).update(words(native) | words(latin))
+    for by_language in COUNTRY_WORDS.values():
+        for code, kinds in by_language.items():
+            for own in kinds.values():
+                (english if code.startswith("en") else out).update(w for x in own for w in words(x))
     # Words English signs share ("bank", "hotel", "shop") name no language; "the" is a Sinhala word's
     # transliteration and an English one.
     return frozenset(out - english - {"the"})

@@ -3,6 +3,7 @@ get directions, and walk to that very store (or walk first, then order)."""
 
 from __future__ import annotations
 
+import itertools
 import math
 from typing import Any
 
@@ -929,9 +930,11 @@ def _store_to_store_task(ctx: Context, rng: Any, n: int, items: list[tuple[Any, 
 
 
 def pair_tasks(ctx: Context) -> list[Task]:
-    """Hard by composition (issue 26, principle 6), in two forms over a seeded shuffle of the ids. 18 of the
-    60 name three stores (``NAMED_TASKS``): three products bought together in one order at one pickup store,
-    the one of the three that has all three in stock within a budget for the three (``named_draw``). The other
+    """Hard by composition (issue 26, principle 6), in forms over a seeded shuffle of the ids. 18 of the 60
+    (``TOUR_TASKS``) are the tour form (``tour_tasks``): a list of four bought at two or three stores within a
+    budget, on the shortest walk past them to an end point. Numbers the tour pool cannot fill (none now) name
+    three stores (``NAMED_TASKS``): three products bought together in one order at one pickup store, the one
+    of the three that has all three in stock within a budget for the three (``named_draw``). The other
     42 are the split form (``split_tasks``): a list no single store has in stock, two orders at two stores
     within one budget, on the shortest walk past one store to the other. Every number the agent needs is on
     the product pages and the map (the checkout shows one chosen store's total at a time). Ids keep the
@@ -1002,13 +1005,20 @@ def pair_tasks(ctx: Context) -> list[Task]:
     # the task numbers: any pattern in the ids (every eighth task named, cells in id order) lets tasks some
     # ids apart agree on the answer (tests/core/test_id_order.py).
     order = rng_for("shopping-pair-forms").sample(range(PER_TEMPLATE), PER_TEMPLATE)
-    named_ids = set(order[:NAMED_TASKS])
+    # The tour form first, for the first TOUR_TASKS numbers of the shuffle (the named form's numbers among
+    # them): as many as the stock and the map allow within its shares; the numbers it leaves keep the
+    # older forms.
+    tours = tour_tasks(ctx, order[:TOUR_TASKS])
+    named_ids = set(order[:NAMED_TASKS]) - set(tours)
     cells = {m: i for i, m in enumerate(m for m in order if m in named_ids)}
-    split = split_tasks(ctx, [m for m in order if m not in named_ids])  # in the shuffle's order: its cells
+    split = split_tasks(ctx, [m for m in order if m not in named_ids and m not in tours])  # in the shuffle's order
     for n in slots(out):
         # 18 tasks name three stores, the others are the split form. The named tasks cycle through every
         # pair of (answer's distance rank, rivals' failures), the answer's rank among all four stores spread
         # over all four (NAMED_RANKS).
+        if n in tours:
+            out.append(tours[n])
+            continue
         if n not in named_ids:
             out.append(split[n])
             continue
@@ -1056,6 +1066,323 @@ def pair_tasks(ctx: Context) -> list[Task]:
                       "named_stores": named, "totals": {sid: t for sid, t in totals.items() if t is not None}},
         ))
     return out
+
+
+
+# The tour form of the hard pair tasks (issue 26, principle 6): four items no single store has in stock, bought
+# at two OR three of the four stores (one order at each store walked to, every item once), within one budget,
+# then carried to an end point. Each set of stores that can fill the list is a plan, priced at its cheapest
+# fill that buys something at every one of its stores, and walked in any order of its stores: up to 12 walks
+# over pairs and 24 over three stores. The answer is the shortest whole walk among the plans within the budget.
+TOUR_SIZES = (2, 3)  # stores in a plan
+TOUR_TASKS = 18  # of the 60: the numbers the named form had (its store rule passed 10 % of the cell)
+TOUR_ITEMS = 4
+TOUR_SINGLE_SHARE = 0.5  # of the lists drawn, this share has one item lacking at each store
+TOUR_MONEY_MARGIN = 0.05  # the answer's fill is this much under the budget, every plan over it this much over
+TOUR_MIN_WITHIN = 20  # walks (store orders) among the plans within the budget: too many to check one by one
+TOUR_GAP_M = 30.0  # the answer's walk beats every other walk within the budget by at least this (map rounds to 10 m)
+TOUR_GAP_MAX_M = 120.0  # and by at most this: estimating, or one slip in the sums, picks a rival
+TOUR_OVER_MAX = 3.0  # some shorter walk is over the budget by this many dollars or less: the sums must be exact
+TOUR_MAX_WALK_M = 4200.0  # the whole walk: about 210 moves, within the hard step budget with the reading
+TOUR_SHARE = 0.33  # each shortcut walks the answer's plan in at most this share of the tour tasks
+TOUR_SET_SHARE = 0.45  # no set of stores the answer of more than this share (three-store answers are
+# possible for few sets: the stock lets few sets need all three of their stores)
+TOUR_POOL_DRAWS = 12000  # lists drawn for the pool the suite is picked from
+TOUR_SHORTCUTS_RIGHT = 2  # at most this many shortcuts right in any one task
+TOUR_SHORTCUTS = ("pair nearest the end", "pair nearest the start", "cheapest plan", "fewest stores",
+                  "stores in the listed order", "greedy nearest next", "straight-line best walk",
+                  "nearest store first", "end point not read", "budget not read")
+
+
+def set_key(stores: Any) -> str:
+    """A set of stores, unordered, as metadata names it ("a|b|c", ids sorted)."""
+    return "|".join(sorted(stores))
+
+
+def plan_fill(items: list[tuple[Any, str]], stores: tuple[str, ...]) -> tuple[float, list[str]] | None:
+    """The cheapest way to buy every item once at these stores, each store selling it in stock, with at least
+    one item bought at every one of them (one order per store walked to): (total, the store of each item), or
+    None when no such fill exists."""
+    best: tuple[float, list[str]] | None = None
+    options = [[(sid, o.price) for sid in stores if (o := product.offer(size, sid)) is not None
+                and in_stock(product, size, sid)] for product, size in items]
+    for choice in itertools.product(*options):
+        if {sid for sid, _ in choice} != set(stores):
+            continue
+        total = round(sum(p for _, p in choice), 2)
+        if best is None or total < best[0]:
+            best = (total, [sid for sid, _ in choice])
+    return best
+
+
+def tour_budget(total: float, over: list[float]) -> float | None:
+    """The roundest budget (dollars, halves, quarters, dimes, nickels) that the answer's fill fits and every
+    total in ``over`` exceeds, each by TOUR_MONEY_MARGIN or more, or None. Prices are in cents and the budget
+    is stated exactly, so a few cents decide fairly; the three-store plans cost only a little less than their
+    pairs, so the budget must be fine to rule the pairs out."""
+    for step in (1.0, 0.5, 0.25, 0.1, 0.05):
+        budget = round(math.ceil(round((total + TOUR_MONEY_MARGIN) / step, 6)) * step, 2)
+        if all(t >= budget + TOUR_MONEY_MARGIN - 1e-9 for t in over):
+            return budget
+    return None
+
+
+def passes_in_order(world: Any, nodes: list[str], stops: list[Any], radius: float = 25.0) -> bool:
+    """A walk along these nodes meets the graded order of ``stops`` as the grader reads ``passed_place`` with
+    ``after``: each stop passed, and each one last passed at or after the moment the one before was first
+    passed."""
+    points = [world.node(n) for n in nodes]
+    near = [[i for i, p in enumerate(points) if haversine_m(p.lat, p.lng, q.lat, q.lng) <= radius] for q in stops]
+    if any(not hits for hits in near):
+        return False
+    return all(max(near[k]) >= min(near[k - 1]) for k in range(1, len(stops)))
+
+
+def tour_shortcuts(ctx: Context, routes: dict[tuple[str, ...], float], costs: dict[str, float], budget: float,
+                   from_start: dict[str, float], legs: Any, start: Any, end: Any) -> dict[str, tuple[str, ...] | None]:
+    """The plan (store order) each tempting shortcut walks, or None where it picks none. ``routes`` is every
+    order of every set of stores that can fill the list, with its whole walk; ``costs`` each set's cheapest
+    fill. The shortcuts: the pair within the budget nearest the end point (sum of its two walks to it), ending
+    at the store nearer it; the pair within the budget nearest the start, nearer store first; the cheapest set,
+    in its shortest order; the shortest walk among the plans with the fewest stores (three-store plans not
+    considered); the shortest walk visiting its stores in the order the shop lists them; the greedy walk (the
+    nearest store, then the nearest store not yet visited, until the stores so far fill the list within the
+    budget); the shortest walk by straight lines; the shortest walk starting at the nearest store; the
+    shortest walk from the start past the stores, the end point not read; the shortest walk, the budget not
+    read."""
+    within = {r: m for r, m in routes.items() if costs[set_key(r)] <= budget}
+    out: dict[str, tuple[str, ...] | None] = {name: None for name in TOUR_SHORTCUTS}
+    if not within:
+        return out
+
+    def shortest(rs: Any, key: Any = None) -> tuple[str, ...] | None:
+        rs = list(rs)
+        return min(rs, key=key or (lambda r: routes[r])) if rs else None
+
+    to_end = {sid: legs(ctx.store_places[sid].node, end.node) for sid in ctx.stores}
+    pairs = [r for r in within if len(r) == 2]
+    if pairs:
+        near_end = min(sorted({set_key(r) for r in pairs}), key=lambda k: sum(to_end[s] for s in k.split("|")))
+        out["pair nearest the end"] = tuple(sorted(near_end.split("|"), key=lambda s: -to_end[s]))
+        near_start = min(sorted({set_key(r) for r in pairs}), key=lambda k: sum(from_start[s] for s in k.split("|")))
+        out["pair nearest the start"] = tuple(sorted(near_start.split("|"), key=lambda s: from_start[s]))
+    cheapest = min(costs, key=lambda k: (costs[k], k))
+    out["cheapest plan"] = shortest(r for r in routes if set_key(r) == cheapest)
+    fewest = min(len(r) for r in within)
+    out["fewest stores"] = shortest(r for r in within if len(r) == fewest)
+    listed = list(ctx.stores)
+    out["stores in the listed order"] = shortest(r for r in within if list(r) == sorted(r, key=listed.index))
+    walked: list[str] = []
+    here = None
+    while len(walked) < max(TOUR_SIZES):
+        ahead = [sid for sid in ctx.stores if sid not in walked]
+        nxt = min(ahead, key=lambda sid: from_start[sid] if here is None else legs(ctx.store_places[here].node,
+                                                                                   ctx.store_places[sid].node))
+        walked.append(nxt)
+        here = nxt
+        if tuple(walked) in within:
+            out["greedy nearest next"] = tuple(walked)
+            break
+    pts = {sid: ctx.world.node(p.node) for sid, p in ctx.store_places.items()}
+    s, e = ctx.world.node(start.node), ctx.world.node(end.node)
+
+    def line(r: tuple[str, ...]) -> float:
+        way = [s, *(pts[x] for x in r), e]
+        return sum(haversine_m(a.lat, a.lng, b.lat, b.lng) for a, b in zip(way, way[1:]))
+
+    out["straight-line best walk"] = shortest(within, key=line)
+    nearest = min(sorted({r[0] for r in within}), key=lambda sid: from_start[sid])
+    out["nearest store first"] = shortest(r for r in within if r[0] == nearest)
+    out["end point not read"] = shortest(within, key=lambda r: routes[r] - to_end[r[-1]])
+    out["budget not read"] = shortest(routes)
+    return out
+
+
+def tour_tasks(ctx: Context, numbers: list[int]) -> dict[int, Task]:
+    """The tour form for as many of the task numbers given as the data allows, in their order (the rest are
+    left to the other forms). A list of four items, one lacking at each store (no store fills it alone); every
+    set of two or three stores that can fill it is a plan (``plan_fill``), each order of its stores a walk
+    from the start S past them to the end point E. The answer is the shortest walk within the budget. Each
+    part decides: some shorter walk is over the budget, by a few dollars at most; at least TOUR_MIN_WITHIN
+    walks are within it, and the next of them is longer by TOUR_GAP_M to TOUR_GAP_MAX_M; every other order of
+    the answer's stores misses the graded order; the shortcuts (``tour_shortcuts``) each walk the answer in at
+    most about a third of the tasks; answers spread over the sets of stores."""
+    rng = rng_for("shopping", "pair-tour")
+    store_ids = list(ctx.stores)
+    legs_cache: dict[tuple[str, str], Any] = {}
+
+    def leg(a_node: str, b_node: str) -> Any:
+        if (a_node, b_node) not in legs_cache:
+            legs_cache[(a_node, b_node)] = ctx.world.directions(a_node, b_node)
+        return legs_cache[(a_node, b_node)]
+
+    def leg_m(a_node: str, b_node: str) -> float:
+        return float(leg(a_node, b_node).distance_m)
+
+    node = {sid: p.node for sid, p in ctx.store_places.items()}
+    lacking, kinds = lacking_sets(ctx, store_ids)
+    places = walk_places(ctx)
+    by_store: dict[str, list[Any]] = {}
+    for place in places:
+        near = {sid: ctx.walk(place, sid).distance_m for sid in store_ids}
+        by_store.setdefault(min(store_ids, key=near.__getitem__), []).append(place)
+    sets = [tuple(c) for k in TOUR_SIZES for c in itertools.combinations(store_ids, k)]
+
+    def draw() -> list[Any]:
+        # Each item lacking at one store or more (a set of stores drawn evenly among those the stock has): an
+        # item only some stores keep rules some sets of stores out, which is where three stores are needed.
+        if rng.random() < TOUR_SINGLE_SHARE:  # one item lacking at each store: every set fills, prices decide
+            items = [rng.choice(lacking[k]) for k in kinds if len(k) == 1]
+            rng.shuffle(items)
+        else:
+            items = [rng.choice(lacking[rng.choice(kinds)]) for _ in range(TOUR_ITEMS)]
+        if len({p.id for p, _ in items}) < len(items):
+            return []
+        if any(all(in_stock(p, size, sid) for p, size in items) for sid in store_ids):
+            return []  # some store fills the list alone
+        fills = {set_key(c): f for c in sets if (f := plan_fill(items, c)) is not None}
+        costs = {k: f[0] for k, f in fills.items()}
+        found = []
+        for _ in range(SPLIT_PLACE_TRIES):
+            start = rng.choice(by_store[rng.choice(sorted(by_store))])
+            end = rng.choice(places)
+            if start.id == end.id or start.node == end.node:
+                continue
+            from_start = {sid: ctx.walk(start, sid).distance_m for sid in store_ids}
+            routes = {}
+            for k in costs:
+                for r in itertools.permutations(k.split("|")):
+                    routes[r] = from_start[r[0]] + sum(leg_m(node[a], node[b]) for a, b in zip(r, r[1:])) \
+                        + leg_m(node[r[-1]], end.node)
+            ranked = sorted(routes, key=lambda r: (routes[r], r))
+            for at in range(1, len(ranked)):
+                target = ranked[at]
+                key = set_key(target)
+                shorter = [r for r in ranked if r != target and routes[r] <= routes[target]]
+                if not any(routes[r] <= routes[target] - TOUR_GAP_M for r in shorter) \
+                        or any(set_key(r) == key for r in shorter):
+                    continue  # a clearly shorter walk for the budget to rule out; its own stores no shorter
+                budget = tour_budget(costs[key], [costs[set_key(r)] for r in shorter])
+                if budget is None:
+                    continue
+                within = [r for r in ranked if costs[set_key(r)] <= budget]
+                over = min(costs[set_key(r)] for r in shorter) - budget
+                gap = routes[within[1]] - routes[target] if len(within) > 1 else 0.0
+                if len(within) < TOUR_MIN_WITHIN or not TOUR_GAP_M <= gap <= TOUR_GAP_MAX_M or over > TOUR_OVER_MAX:
+                    continue
+                if routes[target] > TOUR_MAX_WALK_M:
+                    continue  # the walk must fit the step budget
+                at_end = ctx.world.node(end.node)
+                if any(haversine_m(at_end.lat, at_end.lng, q.lat, q.lng) < SPLIT_END_GAP_M
+                       for q in (ctx.world.node(node[sid]) for sid in target)):
+                    continue  # E no store's doorstep
+                stops = [ctx.world.node(node[sid]) for sid in target]
+                rivals = [r for r in itertools.permutations(target) if r != target]
+                if any(passes_in_order(ctx.world, tour_nodes(leg, start.node, [node[x] for x in r], end.node), stops)
+                       for r in rivals):
+                    continue  # another order of the same stores would pass them in the graded order too
+                picked = tour_shortcuts(ctx, routes, costs, budget, from_start, leg_m, start, end)
+                if sum(r == target for r in picked.values()) > TOUR_SHORTCUTS_RIGHT:
+                    continue
+                found.append((items, start, end, target, budget, costs, fills[key][1], routes, picked, gap, over,
+                              len(within)))
+        return found
+
+    pool: list[Any] = []
+    for _ in range(TOUR_POOL_DRAWS):
+        pool.extend(draw())
+    hits = {name: 0 for name in TOUR_SHORTCUTS}
+    cap = int(TOUR_SHARE * len(numbers))
+    set_counts = {set_key(c): 0 for c in sets}
+    set_cap = int(TOUR_SET_SHARE * len(numbers)) + 1
+    store_counts = ctx.store_counts()
+    places_used = {p.id: 0 for p in places}
+    out: dict[int, Task] = {}
+    used: set[int] = set()
+    for n in numbers:
+        open_ = [i for i, c in enumerate(pool) if i not in used and set_counts[set_key(c[3])] < set_cap
+                 and all(hits[name] < cap for name, r in c[8].items() if r == c[3])]
+        if not open_:
+            break
+        pick = min(open_, key=lambda i: (sum(r == pool[i][3] for r in pool[i][8].values()),
+                                         set_counts[set_key(pool[i][3])], sum(store_counts[s] for s in pool[i][3]),
+                                         places_used[pool[i][2].id] + places_used[pool[i][1].id], i))
+        c = pool[pick]
+        out[n] = _tour_task(ctx, rng, n, leg, *c)
+        used.update(i for i, d in enumerate(pool) if d[0] == c[0] or (d[1] is c[1] and d[2] is c[2]))
+        set_counts[set_key(c[3])] += 1
+        for sid in c[3]:
+            store_counts[sid] += 1
+        places_used[c[1].id] += 1
+        places_used[c[2].id] += 1
+        for name, r in c[8].items():
+            hits[name] += r == c[3]
+    return out
+
+
+def tour_nodes(leg: Any, start: str, stops: list[str], end: str) -> list[str]:
+    """The nodes of the shortest walk from ``start`` past ``stops`` in order to ``end``."""
+    way = [start, *stops, end]
+    nodes = [start]
+    for a, b in zip(way, way[1:]):
+        nodes += leg(a, b).nodes[1:]
+    return nodes
+
+
+def _tour_task(ctx: Context, rng: Any, n: int, leg: Any, items: list[tuple[Any, str]], start: Any, end: Any,
+               target: tuple[str, ...], budget: float, costs: dict[str, float], fill: list[str],
+               routes: dict[tuple[str, ...], float], shortcuts: dict[str, tuple[str, ...] | None], gap: float,
+               over: float, n_within: int) -> Task:
+    money = f"${budget:.2f}"
+    intent = (f"Buy me {_listing(items)}. No single store has all four in stock, so buy them at two or three "
+              f"different stores: one order for pickup at each store you will walk to, each item in exactly one "
+              f"order, at a store that has it in stock, spending at most {money} in all (the orders' totals added "
+              f"together). Then walk from {start.name} to pick up every order, one store after another, and carry "
+              f"everything to {place_label(end)}. Of all the ways to do this within {money} (which two or three "
+              f"stores, and in which order you visit them), pick the one with the shortest whole walk: from "
+              f"{start.name} to the first store, from each store to the next, and from the last store to "
+              f"{end.name}. Walk that route: past the stores in that order, ending at {end.name}. {WALK_RULE}")
+    oracle: list[Any] = []
+    for sid in target:  # one order per store: the checkout prices the cart at one pickup store
+        oracle += [c for (product, size), where in zip(items, fill) if where == sid
+                   for c in buy_oracle(product, size, ctx.stores[sid])[:4]]
+        oracle += [call("browser_goto", url=site_url("shop", "/checkout")),
+                   call("browser_click", element=ref("button", "Place order"))]
+    way = [start.name, *target, end.name]
+    oracle += [call("browser_goto", url=site_url("map", "/directions", **{"from": a, "to": b}))
+               for a, b in zip(way, way[1:])]
+    stops = [ctx.store_places[sid] for sid in target]
+    nodes = tour_nodes(leg, start.node, [p.node for p in stops], end.node)
+    oracle += [call("switch_environment", target="embodied", message="walk past the stores in order to the end point"),
+               *[call("street_move", neighbour=x) for x in nodes[1:]], call("street_stop"), call("finish_episode")]
+    at = [ctx.world.node(p.node) for p in stops]
+    goals: list[Any] = []
+    for k, (sid, p, q) in enumerate(zip(target, stops, at)):
+        before = None if k == 0 else Waypoint(node=stops[k - 1].node, lat=at[k - 1].lat, lng=at[k - 1].lng,
+                                               place_id=target[k - 1])
+        goals.append(PassedPlace(city="manhattan", node=p.node, lat=q.lat, lng=q.lng, place_id=sid, after=before))
+    at_end = ctx.world.node(end.node)
+    goals.append(ReachedPlace(city="manhattan", node=end.node, lat=at_end.lat, lng=at_end.lng, place_id=end.id))
+    links = ctx.world.neighbours(start.node)
+    return Task(
+        id=f"shopping-pair-{n:03d}", domain="shopping", difficulty="hard", intent=intent,
+        start=StartState(environment="web", web=WebStart(start_url="shop:/"),
+                         embodied=StreetStart(city="manhattan", node=start.node,
+                                              heading=round(rng.choice([lk.heading for lk in links]), 1))),
+        web_goals=[OrdersSplit(items=[ItemRef(product_id=p.id, size=size) for p, size in items],
+                               store_ids=list(target), max_total=budget)],
+        embodied_goals=goals,
+        step_limit=step_budget("shopping", "hard", len(oracle)),
+        oracle=oracle,
+        metadata={"form": "tour", "store_nodes": {sid: p.node for sid, p in ctx.store_places.items()},
+                  "shortest_path_m": round(routes[target], 1), "start_lat": ctx.world.node(start.node).lat,
+                  "start_lng": ctx.world.node(start.node).lng, "products": [p.id for p, _ in items],
+                  "sizes": [size for _, size in items], "stores": list(target), "budget": budget,
+                  "plan_costs": costs, "fill": fill, "end_id": end.id, "end_node": end.node,
+                  "margin_m": round(gap, 1), "over_budget_by": round(over, 2), "walks_within": n_within,
+                  "walks_m": {">".join(r): round(m, 1) for r, m in sorted(routes.items())},
+                  "shortcuts": {name: (None if r is None else list(r)) for name, r in shortcuts.items()}},
+    )
 
 
 def generate() -> list[Task]:

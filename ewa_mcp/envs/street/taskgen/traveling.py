@@ -185,7 +185,26 @@ CUES = {"architectural_style": "has the same architectural style as {x}",
 CUE_LABEL = {"architectural_style": "their architectural style",
              "year_built": "the year each was built (a decade is 1920 to 1929, and so on)",
              "architect": "their architect"}
-RANGE_MARGIN_M = 150.0  # every other landmark sharing the fact lies this much beyond the range, at least
+# The range is a hard edge measured on the map, and the choice is made at that edge (issue 26, principle 6): the
+# answer's walk ends BOUNDARY_IN_M or less inside the range, and at least MIN_RIVALS other places sharing the
+# fact lie just beyond it (at most BOUNDARY_OUT_M over), most of them nearer than the answer as the crow flies,
+# so neither the straight line nor a guess from addresses settles it: only the map's walks do. The map gives
+# walks to the metre; BOUNDARY_GAP_M keeps every walk that clear of the edge.
+BOUNDARY_IN_M = 70.0
+BOUNDARY_OUT_M = 80.0
+BOUNDARY_GAP_M = 8.0
+BOUNDARY_STEP_M = 50  # the range is a multiple of this
+BOUNDARY_DRAWS = 90  # corners drawn near the target: the edge's constraints leave few of them
+MIN_RIVALS = 1
+
+
+def boundary_limit(walk_m: float) -> int | None:
+    """The round range (a multiple of BOUNDARY_STEP_M) whose edge a walk of ``walk_m`` ends just inside
+    (BOUNDARY_GAP_M..BOUNDARY_IN_M short of it), or None when no such range exists."""
+    limit = int(-(-(walk_m + BOUNDARY_GAP_M) // BOUNDARY_STEP_M) * BOUNDARY_STEP_M)
+    return limit if limit - walk_m <= BOUNDARY_IN_M else None
+
+
 CUE_MAX_M = 900.0  # the walk from the corner (the range holds other landmarks, so it is wider than by sight)
 MIN_SHARING = 1  # landmarks sharing the fact besides the target and X: the fact alone never singles it out
 # Words that do not make two style or architect names alike ("Greek Revival" and "Gothic Revival" differ).
@@ -269,8 +288,10 @@ def cue_task(world: Any, target: Any, rng: Any) -> tuple[str, str, Any, Any, Any
     """(cue key, shared value, X, start, route, range in m) for a hard task about ``target``, or None.
 
     Two hops: X is another landmark of the city whose article gives the shared value; at least MIN_SHARING
-    landmarks besides the target and X share it too, every one of them more than RANGE_MARGIN_M beyond the
-    range (X may stand anywhere: the intent names it, so it is never the answer). The range alone does not
+    landmarks besides the target and X share it too, every one of them beyond the range, and at least MIN_RIVALS
+    of them just beyond it (``boundary_limit``: the answer just inside; X may stand anywhere: the intent names
+    it, so it is never the answer). A corner where a rival just beyond is nearer than the answer as the crow
+    flies is taken first; else one where a rival just beyond is within the range as the crow flies. The range alone does not
     single the target out (another landmark with an article stands within it), and no landmark within the
     range (no place with an article, a station included) has a value that could be read as the same one. Nothing names the answer in one read: the target's
     article does not name X, X's article does not name the target, and the value's own article (the style's,
@@ -301,8 +322,11 @@ def cue_task(world: Any, target: Any, rng: Any) -> tuple[str, str, Any, Any, Any
         if not vias:
             continue
         alike = [p for p in with_articles if (v := cue_value(key, p)) is not None and _alike(key, value, v)]
-        for start, route in near_starts(world, target, rng)[:30]:
-            limit = int(-(-(route.distance_m + 60) // 100) * 100)  # rounded up, 60 m clear of the walk
+        weak: tuple[str, str, Any, Any, Any, int] | None = None
+        for start, route in near_starts(world, target, rng, BOUNDARY_DRAWS):
+            limit = boundary_limit(route.distance_m)
+            if limit is None:
+                continue  # the answer's walk must end just inside a round range
             walks: dict[str, float] = {}
 
             def walk_m(p: Any) -> float:
@@ -315,17 +339,28 @@ def cue_task(world: Any, target: Any, rng: Any) -> tuple[str, str, Any, Any, Any
 
             if not any(walk_m(p) <= limit - 60 for p in peers):
                 continue  # the range alone would single it out
+            here, end = world.node(start.node), world.node(target.node)
+            target_crow = haversine_m(here.lat, here.lng, end.lat, end.lng)
             for via in rng.sample(vias, len(vias)):
                 others = [p for p in sharing if p.id != via.id]
-                if any(p.id != via.id and walk_m(p) <= limit + RANGE_MARGIN_M for p in alike):
-                    continue  # a landmark near the range shares the fact, or one that reads like it
+                if any(p.id != via.id and walk_m(p) <= limit + BOUNDARY_GAP_M for p in alike):
+                    continue  # another place within the range (or at its very edge) shares the fact, or reads so
+                rivals = [p for p in others if walk_m(p) <= limit + BOUNDARY_OUT_M]
+                if len(rivals) < MIN_RIVALS:
+                    continue  # a rival just beyond the range is what makes the walks worth measuring
                 named = {p.id for a in concept_articles(key, value) for p in [target, *others]
                          if names_place(article_text(a), p)}
                 if target.id in named and len(named) < 2:
                     continue  # the style's (or architect's) article would name the answer alone
                 if len(others) < MIN_SHARING:
                     continue
-                return key, value, via, start, route, limit
+                crows = [haversine_m(here.lat, here.lng, (n := world.node(p.node)).lat, n.lng) for p in rivals]
+                if any(c < target_crow for c in crows):
+                    return key, value, via, start, route, limit  # the straight line picks a rival
+                if weak is None and any(c <= limit for c in crows):
+                    weak = (key, value, via, start, route, limit)  # a rival within the range as the crow flies
+        if weak is not None:
+            return weak
     return None
 
 
@@ -344,11 +379,12 @@ def landmark_task(world: Any, tid: str, target: Any, article: Any, question_key:
         city = world.city(target.city).name.split(" (")[0]
         x, y = article_of(via).title, article_of(pair[2]).title
         intent = (f"You are at the corner of {corner} in {city}. Of the places with a wiki article (buildings, "
-                  f"parks, squares, stations) within about {limit} m of this corner on foot, exactly one other "
+                  f"parks, squares, stations) whose walk from this corner is at most {limit} m by the map's "
+                  f"directions, exactly one other "
                   f"than {x} and {y} {CUES[key].format(x=x)} and {CUES[pair[0]].format(x=y)}, as their wiki "
                   f"articles give {CUE_LABEL[key]} and {CUE_LABEL[pair[0]]}. Other places within that range "
-                  "share only one of the two facts, and farther away another place shares both: only the two "
-                  f"facts and the range together single it out. Find it: the wiki articles of {x} and {y} give "
+                  "share only one of the two facts, and another place shares both just beyond it: only the two "
+                  f"facts and the measured walks together single it out. Find it: the wiki articles of {x} and {y} give "
                   "the facts, the wiki's articles give each place's address, and the map measures walks. "
                   f"{WALK_RULE} When you are there, look it up on the wiki and answer: {question} "
                   + answer_rule(FORMS[question_key]))
@@ -359,9 +395,11 @@ def landmark_task(world: Any, tid: str, target: Any, article: Any, question_key:
         # "places with a wiki article", not "landmarks": the wiki files some of them under parks or
         # squares, and a player read "landmarks" as the wiki's Landmarks category
         intent = (f"You are at the corner of {corner} in {city}. Of the places with a wiki article (buildings, "
-                  f"parks, squares, stations) within about {limit} m of this corner on foot, exactly one other "
+                  f"parks, squares, stations) whose walk from this corner is at most {limit} m by the map's "
+                  f"directions, exactly one other "
                   f"than {x} {CUES[key].format(x=x)}, as their wiki articles give {CUE_LABEL[key]}; other places "
-                  f"of the city share it too, farther away. Find it: {x}'s wiki article gives the fact, the "
+                  "of the city share it too, one or more of them just beyond that walk though within it as the "
+                  f"crow flies, so measure each one's walk on the map. Find it: {x}'s wiki article gives the fact, the "
                   "wiki's articles give each place's address, and the map measures walks. "
                   f"{WALK_RULE} When you are there, look it up on the wiki and answer: {question} "
                   + answer_rule(FORMS[question_key]))
@@ -451,6 +489,22 @@ def generate() -> list[Task]:
     return tasks + hard_tasks(world)
 
 
+# The hard tasks' ids as released (city, slot): kept when the rule that picks landmarks changes, so that
+# results stay comparable task by task.
+HARD_SLOTS = tuple(tuple(i.rsplit("-", 2)[-2:]) for i in (
+    "traveling-hard-manhattan-000 traveling-hard-manhattan-001 traveling-hard-pittsburgh-002 "
+    "traveling-hard-manhattan-003 traveling-hard-manhattan-004 traveling-hard-boston-005 "
+    "traveling-hard-manhattan-006 traveling-hard-manhattan-007 traveling-hard-pittsburgh-008 "
+    "traveling-hard-manhattan-009 traveling-hard-manhattan-010 traveling-hard-pittsburgh-011 "
+    "traveling-hard-manhattan-012 traveling-hard-philadelphia-013 traveling-hard-philadelphia-014 "
+    "traveling-hard-manhattan-015 traveling-hard-manhattan-016 traveling-hard-manhattan-017 "
+    "traveling-hard-manhattan-018 traveling-hard-philadelphia-019 traveling-hard-manhattan-020 "
+    "traveling-hard-manhattan-021 traveling-hard-manhattan-022 traveling-hard-manhattan-023 "
+    "traveling-hard-manhattan-024 traveling-hard-manhattan-025 traveling-hard-manhattan-026 "
+    "traveling-hard-manhattan-027 traveling-hard-philadelphia-028 traveling-hard-pittsburgh-029").split())
+assert len(HARD_SLOTS) == HARD_TARGET
+
+
 def hard_tasks(world: Any) -> list[Task]:
     """Hard by composition: a landmark named by the wiki fact it shares with another named landmark of its city
     (which others share too) and a walking range that holds other landmarks (``cue_task``); the answer is
@@ -460,9 +514,15 @@ def hard_tasks(world: Any) -> list[Task]:
     hints = [p.description_hint for p in landmarks]
     rng = rng_for("traveling", "hard")
     rng.shuffle(landmarks)
+    # The released ids name a city and a slot; each slot takes its city's next landmark that makes a task.
+    free = {city: sorted((int(n) for c, n in HARD_SLOTS if c == city), reverse=True)
+            for city in dict.fromkeys(c for c, _ in HARD_SLOTS)}
+    slots: dict[int, Task] = {}
     for target in landmarks:
-        if len(tasks) >= HARD_TARGET:
+        if len(slots) >= HARD_TARGET:
             break
+        if not free.get(target.city):
+            continue  # the city's slots are filled (or it has none)
         article = wiki.by_poi_id(target.id)
         if article is None or hints.count(target.description_hint) > 1:
             continue
@@ -479,9 +539,14 @@ def hard_tasks(world: Any) -> list[Task]:
         questions = [k for k in answerable if k != key and via.facts.get(k) != target.facts.get(k)]
         if not questions:
             continue
-        tasks.append(landmark_task(world, f"traveling-hard-{target.city}-{len(tasks):03d}", target, article,
-                                   trng.choice(questions), start, route, trng, hard=True,
-                                   cue=(key, value, via, limit)))
+        slot = free[target.city].pop()
+        slots[slot] = landmark_task(world, f"traveling-hard-{target.city}-{slot:03d}", target, article,
+                                    trng.choice(questions), start, route, trng, hard=True,
+                                    cue=(key, value, via, limit))
+    if len(slots) < HARD_TARGET:
+        raise ValueError(f"traveling hard: no landmark fits slots {sorted(n for c in free.values() for n in c)}; "
+                         "widen BOUNDARY_IN_M / BOUNDARY_OUT_M or BOUNDARY_DRAWS in envs/street/taskgen/traveling.py")
+    tasks = [slots[i] for i in sorted(slots)]
     return with_pairs(world, tasks, landmarks)
 
 
@@ -530,9 +595,7 @@ def with_pairs(world: Any, tasks: list[Task], landmarks: list[Any]) -> list[Task
 # share X's fact only and Y's fact only, so neither fact alone (nor the nearest place sharing it) finds the
 # answer; farther away another place shares both, so the pair without the range does not either.
 PAIR_SHARE = 0.5  # of the hard slots, drawn by a seeded shuffle (where the data has such a pair)
-PAIR_MARGIN_M = 100.0  # the place beyond the range sharing both, and any other reading as sharing both, lie
-#                        this much beyond it at least
-PAIR_CLEAR_M = 60.0  # the target and the one-fact places stand this much inside the range
+PAIR_CLEAR_M = 60.0  # the one-fact places stand this much inside the range (the target just inside: BOUNDARY_IN_M)
 PAIR_ONLY = 1  # places within the range sharing one of the facts only, for each fact, at least
 PAIR_STARTS = 120  # corners drawn near the target: a pair's constraints leave few of them
 
@@ -543,7 +606,8 @@ def pair_task(world: Any, target: Any, rng: Any) -> tuple[tuple[str, str, Any], 
     and Y are landmarks other than the target and each other and do not name it nor it them. From the corner,
     within the range: the target, at least one place sharing the first fact only and one sharing the second
     only (each exactly, the other fact unlike); no place other than X and Y that could be read as sharing both
-    stands within the range or PAIR_MARGIN_M beyond it; at least one place sharing both stands farther."""
+    stands within the range (nor BOUNDARY_GAP_M beyond it); at least one place sharing both stands just beyond
+    it (at most BOUNDARY_OUT_M over), and the answer's walk ends just inside it (``boundary_limit``)."""
     peers = [p for p in landmarks_of(world) if p.city == target.city and p.id != target.id
              and wiki.by_poi_id(p.id) is not None]
     with_articles = sorted((p for p in world.places.values() if p.city == target.city and p.id != target.id
@@ -584,7 +648,9 @@ def pair_task(world: Any, target: Any, rng: Any) -> tuple[tuple[str, str, Any], 
         only_y = [p for p in with_articles if value(ky, p) == vy and not like(kx, vx, p) and stated(ky, vy, p)]
         alike_both = [p for p in with_articles if like(kx, vx, p) and like(ky, vy, p)]
         for start, route in iter_near_starts(world, target, rng, PAIR_STARTS):
-            limit = int(-(-(route.distance_m + PAIR_CLEAR_M) // 100) * 100)
+            limit = boundary_limit(route.distance_m)
+            if limit is None:
+                continue  # the answer's walk must end just inside a round range
             walks: dict[str, float] = {}
             here = world.node(start.node)
 
@@ -603,14 +669,15 @@ def pair_task(world: Any, target: Any, rng: Any) -> tuple[tuple[str, str, Any], 
                     walks[p.id] = float("inf")
                 return walks[p.id]
 
-            near, inner = limit + PAIR_MARGIN_M, limit - PAIR_CLEAR_M
+            near, inner = limit + BOUNDARY_GAP_M, limit - PAIR_CLEAR_M
             for x in rng.sample(xs, len(xs)):
                 for y in rng.sample(ys, len(ys)):
                     named = {x.id, y.id}
                     if any(p.id not in named and walk_m(p, near) <= near for p in alike_both):
                         continue  # another place near the range could be read as sharing both
-                    if not any(p.id not in named and walk_m(p, near) > near for p in both):
-                        continue
+                    if not any(p.id not in named and walk_m(p, limit + BOUNDARY_OUT_M) <= limit + BOUNDARY_OUT_M
+                               for p in both):
+                        continue  # a place sharing both just beyond the range: only the walks tell it apart
                     if sum(p.id not in named and walk_m(p, inner) <= inner for p in only_x) < PAIR_ONLY:
                         continue  # the second fact alone would find it
                     if sum(p.id not in named and walk_m(p, inner) <= inner for p in only_y) < PAIR_ONLY:
