@@ -3,7 +3,7 @@
 Shopping (played through the real server, Chromium and street graph, graded from the run directory): the
 oracle of a split task (two orders at two stores within one budget) passes; ordering at the pair with a
 shorter walk (over the budget) fails, and so do the right orders walked the other way round. Navigation (the same way):
-the stops (four, or five) in the answer's order (the wiki's by year built, or the shortest on foot) pass; the same walk in
+the stops (four to six) in the answer's order (the wiki's by year built, or the shortest on foot) pass; the same walk in
 the order the intent lists them fails, and so does the right last stop with two stops before it swapped (and,
 for the shortest order, the greedy nearest-next order). Cooking (graded offline with
 the kitchen's own checks on real simulator outcomes): a recipe told apart only by a step passes with its own

@@ -126,7 +126,7 @@ _STOPS = (r"Starting at (?P<o>.+?), walk to (?P<s>.+?) in the order they were bu
           r"I am at (?P<o>.+?) and want to see (?P<s>.+?), from the oldest building",
           # the shortest-order form: the order is the agent's to find from the map's walking distances
           r"Starting at (?P<o>.+?), visit (?P<s>.+?) in the order that makes the shortest walk",
-          r"I am at (?P<o>.+?) and want to see (?P<s>.+?), all (?:four|five), in whichever order")
+          r"I am at (?P<o>.+?) and want to see (?P<s>.+?), all (?:four|five|six), in whichever order")
 
 
 def split_listed(text: str) -> list[str]:

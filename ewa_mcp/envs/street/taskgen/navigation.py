@@ -7,8 +7,8 @@ composition (issue 26, principle 6): four named stops visited in the order the w
 building first, by the year built), ending at the newest; the intent lists them in an independent shuffle
 (passed_place goals for the first three, each after the one before, reached_place for the last, a wiki
 page view of each). Three in four of the hard tasks (slots a seeded shuffle picks) ask instead for the order
-that makes the shortest walk on foot past five stops, from the map's walking distances, graded by the same
-chain."""
+that makes the shortest walk on foot past six stops (five or four where a city gives no six), from the map's
+walking distances, graded by the same chain."""
 
 from __future__ import annotations
 
@@ -245,25 +245,27 @@ def year_order_tasks(world: Any, resolver: WorldAdapter, city: str, places: list
     return tasks
 
 
-SHORTEST_STOPS = 5  # 120 orders from fifteen walking distances; four (24 orders) only where five cannot be drawn
-SHORTEST_FALLBACK_STOPS = 4
+SHORTEST_STOPS = 6  # 720 orders from 21 walking distances; five (120), then four (24), only where six cannot be drawn
+SHORTEST_FALLBACK_STOPS = (5, 4)
 SHORTEST_NEAR_M = 700.0  # every stop within this of the origin as the crow flies
 # The shortest leg between two stops: shorter than the year-order form's (the order is searched, not sorted, and
 # a stop passed on the way to another is caught by the chain check below); 150 m left Boston's clustered
 # landmarks almost no draw of five.
 SHORTEST_MIN_LEG_M = 100.0
 # The best order beats the second best by at least SHORTEST_MARGIN_M (the map rounds each leg to 1 m, so a sum
-# of five legs is off by 2.5 m at most: rounding never flips it) but by no more than SHORTEST_MARGIN_MAX_M, so
-# an estimate (straight lines, the listed order) or one slipped sum picks a rival.
-SHORTEST_MARGIN_M = 40.0
-SHORTEST_MARGIN_MAX_M = 120.0
-SHORTEST_MAX_M = {4: STOPS_MAX_M, 5: 2600.0}  # the best walk, by stops (the hard step budget fits it)
-SHORTEST_TRIES = 4000  # draws for one slot with five stops before it falls back to four
+# of six legs is off by 3 m at most: rounding never flips it) but by no more than SHORTEST_MARGIN_MAX_M, so
+# an estimate (straight lines, the listed order) or one slipped sum picks a rival; the third best is within
+# SHORTEST_THIRD_MAX_M of the best, so a near miss has more than one rival to land on.
+SHORTEST_MARGIN_M = 30.0
+SHORTEST_MARGIN_MAX_M = 100.0
+SHORTEST_THIRD_MAX_M = 160.0
+SHORTEST_MAX_M = {4: STOPS_MAX_M, 5: 2600.0, 6: 3000.0}  # the best walk, by stops (the hard step budget fits it)
+SHORTEST_TRIES = 4000  # draws for one slot with six stops before it falls back to five (then four)
 SHORTEST_SHARE = 1 / 3  # no tempting shortcut (shortcut_orders) may give the answer in more of a city's tasks
 # Of a city's hard slots, this share asks for the shortest order, the rest for the wiki's year order (round 9:
-# strong agents sort four years without a slip; a search over 120 orders is where care can fail).
+# strong agents sort four years without a slip; a search over 720 orders is where care can fail).
 SHORTEST_SLOTS = 3 / 4
-NUMBER_WORDS = {4: "four", 5: "five"}
+NUMBER_WORDS = {4: "four", 5: "five", 6: "six"}
 FARTHEST_LAST = "ends at the place farthest from the start on foot"
 # The end a shortest walk most often has (in three of four kept draws without this cap).
 SHORTEST_END_SHARE = 1 / 3
@@ -294,14 +296,35 @@ def greedy_from(leg: Any, here: Any, left: list[Any]) -> list[Any]:
     return out
 
 
+def two_opt(leg: Any, origin: Any, order: list[Any]) -> list[Any]:
+    """``order`` improved by reversing a stretch of it while any reversal shortens the walk from ``origin``
+    (the start stays first; the best reversal each round, the first of equals)."""
+    order = list(order)
+    while True:
+        now = walk_length(leg, origin, order)
+        tries = [order[:i] + order[i:j + 1][::-1] + order[j + 1:]
+                 for i in range(len(order)) for j in range(i + 1, len(order))]
+        better = min(tries, key=lambda o: walk_length(leg, origin, o))
+        if walk_length(leg, origin, better) >= now - 1e-9:
+            return order
+        order = better
+
+
+def cheapest_insertion(leg: Any, origin: Any, part: list[Any], rest: Any) -> list[Any]:
+    """``part`` with the stop ``rest`` put where it lengthens the walk from ``origin`` least."""
+    tries = [part[:i] + [rest] + part[i:] for i in range(len(part) + 1)]
+    return min(tries, key=lambda o: walk_length(leg, origin, o))
+
+
 def shortcut_orders(world: Any, leg: Any, origin: Any, stops: list[Any], listed: list[Any]) -> dict[str, list[str]]:
     """The orders a shortcut gives instead of working through every order (the ids, first to last): the order
     the intent lists; always the nearest stop not yet seen on foot (greedy nearest-next); the others as listed,
     then an end by elimination (the stop-elimination agent's order); nearest to farthest
     from the start as the crow flies; nearest to farthest from the start on foot; the shortest tour on straight
     lines between the places' points (the answer without reading the map); the best walk past all but one stop
-    (the smaller search done right), the one left appended. ``leg(a, b)`` is the map's walking distance in
-    metres."""
+    (the smaller search done right), the one left appended, or put in at its cheapest place (insertion); greedy
+    nearest-next improved by reversing stretches while that shortens it (2-opt). ``leg(a, b)`` is the map's
+    walking distance in metres."""
     start = world.node(origin.node)
 
     def crow(a: Any, b: Any) -> float:
@@ -323,7 +346,10 @@ def shortcut_orders(world: Any, leg: Any, origin: Any, stops: list[Any], listed:
                                                  world.node(p.node).lng))],
             "walk from the start": [p.id for p in sorted(stops, key=lambda p: leg(origin, p))],
             "straight-line tour": [p.id for p in tour],
-            "best walk past all but one, then the last": [p.id for p in [*part, *rest]]}
+            "best walk past all but one, then the last": [p.id for p in [*part, *rest]],
+            "best walk past all but one, the last inserted": [p.id for p in cheapest_insertion(
+                leg, origin, list(part), rest[0])],
+            "2-opt from greedy nearest-next": [p.id for p in two_opt(leg, origin, greedy)]}
 
 
 def chain_goals(world: Any, city: str, order: list[Any]) -> list[Any]:
@@ -348,13 +374,13 @@ def chain_passes(world: Any, city: str, order: list[Any], nodes: list[str]) -> b
 
 def shortest_order_tasks(world: Any, resolver: WorldAdapter, city: str, places: list[Any],
                          slots: list[int]) -> list[Task]:
-    """Hard by composition and discrimination (issue 26, principle 6): five named stops (four where the city's
-    data gives no five), visited in the order that makes the shortest walk on foot, ending at the last. The
-    order is the agent's to find from the map's walking distances (fifteen of them: the start to each stop,
-    each two stops), working through the 120 orders; each distance is stated plainly, but only all of them
-    together give the order. Kept draws: the best order beats the second best by SHORTEST_MARGIN_M to
+    """Hard by composition and discrimination (issue 26, principle 6): six named stops (five, then four, where
+    the city's data gives no six), visited in the order that makes the shortest walk on foot, ending at the
+    last. The order is the agent's to find from the map's walking distances (21 of them: the start to each
+    stop, each two stops), working through the 720 orders; each distance is stated plainly, but only all of
+    them together give the order. Kept draws: the best order beats the second best by SHORTEST_MARGIN_M to
     SHORTEST_MARGIN_MAX_M (clear of the map's rounding, small enough that an estimate or one slipped sum picks
-    a rival); no shortcut (shortcut_orders) gives it in more than SHORTEST_SHARE of the city's tasks, greedy
+    a rival) and the third by at most SHORTEST_THIRD_MAX_M; no shortcut (shortcut_orders) gives it in more than SHORTEST_SHARE of the city's tasks, greedy
     nearest-next never, and no draw is given by two shortcuts at once; and a walk that follows the map past the
     stops in any other order fails the chain (the grader passes only the best order, even though a stop passed
     early on the way to another does not count against a walk)."""
@@ -381,14 +407,15 @@ def shortest_order_tasks(world: Any, resolver: WorldAdapter, city: str, places: 
         return list(walk[0].nodes + [x for lg in walk[1:] for x in lg.nodes[1:]])
 
     for n in slots:
-        size, tries = SHORTEST_STOPS, 0
+        sizes = [SHORTEST_STOPS, *SHORTEST_FALLBACK_STOPS]
+        size, tries = sizes.pop(0), 0
         task: Task | None = None
         while task is None:
             tries += 1
-            if tries > SHORTEST_TRIES * (1 if size == SHORTEST_STOPS else 3):  # four: the slot's last chance
-                if size == SHORTEST_FALLBACK_STOPS:
+            if tries > SHORTEST_TRIES * (3 if not sizes else 1):  # the smallest size: the slot's last chance
+                if not sizes:
                     break  # a slot left empty, as with any draw that finds too little (a train split's seed)
-                size, tries = SHORTEST_FALLBACK_STOPS, 0
+                size, tries = sizes.pop(0), 0
             origin = rng.choice(places)
             here = world.node(origin.node)
             near = [p for p in stops_pool if haversine_m(here.lat, here.lng, p.lat, p.lng) <= SHORTEST_NEAR_M]
@@ -408,7 +435,9 @@ def shortest_order_tasks(world: Any, resolver: WorldAdapter, city: str, places: 
                 continue
             order = list(ranked[0])
             best, second = walk_length(leg, origin, order), walk_length(leg, origin, ranked[1])
-            if not SHORTEST_MARGIN_M <= second - best <= SHORTEST_MARGIN_MAX_M or best > SHORTEST_MAX_M[size]:
+            third = walk_length(leg, origin, ranked[2])
+            if not SHORTEST_MARGIN_M <= second - best <= SHORTEST_MARGIN_MAX_M or best > SHORTEST_MAX_M[size] \
+                    or third - best > SHORTEST_THIRD_MAX_M:
                 continue
             listed = list(chosen)
             rng_for("navigation-shortest-listed", city, n).shuffle(listed)  # its own stream, never redrawn
@@ -416,9 +445,9 @@ def shortest_order_tasks(world: Any, resolver: WorldAdapter, city: str, places: 
             matched = [name for name, ids in shortcut_orders(world, leg, origin, chosen, listed).items()
                        if ids == target]
             # the end alone: the place farthest from the start on foot last cuts the search to the orders of
-            # the others (24 of 120), so a five-stop answer ends there in at most SHORTEST_END_SHARE of a
-            # city's tasks (the four-stop fallback, which only clustered Boston needs, is left uncapped)
-            if size == SHORTEST_STOPS and max(chosen, key=lambda p: leg(origin, p)) is order[-1]:
+            # the others (120 of 720), so a six- or five-stop answer ends there in at most SHORTEST_END_SHARE of
+            # a city's tasks (the four-stop fallback, which only clustered Boston needs, is left uncapped)
+            if size >= 5 and max(chosen, key=lambda p: leg(origin, p)) is order[-1]:
                 matched.append(FARTHEST_LAST)
             if {"greedy nearest-next", "the others as listed, then elimination's end"} & set(matched) or \
                     len(set(matched) - {FARTHEST_LAST}) > 1 or \
@@ -432,14 +461,14 @@ def shortest_order_tasks(world: Any, resolver: WorldAdapter, city: str, places: 
             for name in matched:
                 hits[name] = hits.get(name, 0) + 1
             used.add(key)
-            task = shortest_task(world, city, n, origin, order, listed, nodes, route, best, second)
+            task = shortest_task(world, city, n, origin, order, listed, nodes, route, best, second, third)
         if task is not None:
             tasks.append(task)
     return tasks
 
 
 def shortest_task(world: Any, city: str, n: int, origin: Any, order: list[Any], listed: list[Any],
-                  nodes: list[str], route: Any, best: float, second: float) -> Task:
+                  nodes: list[str], route: Any, best: float, second: float, third: float) -> Task:
     """The task of a kept shortest-order draw: every distance the order needs, looked up as an agent would
     (the start to each stop, each two stops), then the walk."""
     legs = [route(a, b) for a, b in zip([origin, *order], order)]
@@ -467,7 +496,7 @@ def shortest_task(world: Any, city: str, n: int, origin: Any, order: list[Any], 
                   "route_steps": sum(len(x.steps) for x in legs), "turns": sum(turns(x) for x in legs),
                   "stops": [p.id for p in order], "listed": [p.id for p in listed], "origin_id": origin.id,
                   "form": "shortest order", "second_best_m": round(second, 1),
-                  "margin_m": round(second - best, 1)},
+                  "margin_m": round(second - best, 1), "third_margin_m": round(third - best, 1)},
     )
 
 
