@@ -87,9 +87,12 @@ def _street_aliases(truth: GeoAnswer) -> tuple[str, ...]:
     # may be a district or postcode ("11e Arrt", "Copacabana"), so only aliases cover those.
     native = tuple(line for line in loc.sign if script_of(line) != "latin")
     # A Latin line that shares a name word with the street is the street's own sign, abbreviated as signs
-    # are ("JL. JEND. SUDIRMAN"): the agent may copy it as it stands.
+    # are ("JL. JEND. SUDIRMAN"): the agent may copy it as it stands. On a sign that also has a local-script
+    # line, every Latin line is that name romanized or translated ("Tian'anmen Guangchang", "NETAJI SUBHASH
+    # CHANDRA BOSE ROAD" on Marine Drive): a district line only stands on Latin-only signs.
     words = set(street_core(loc.street)) - COMPASS_WORDS
-    signed = tuple(line for line in loc.sign if script_of(line) == "latin" and words & set(street_core(line)))
+    signed = tuple(line for line in loc.sign
+                   if script_of(line) == "latin" and (native or words & set(street_core(line))))
     return (*loc.street_aliases, *native, *signed)
 
 
