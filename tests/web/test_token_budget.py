@@ -70,3 +70,22 @@ async def test_web_observations_send_what_changed_by_default_and_snapshots_send_
     finally:
         await episodes.aclose()
         await episodes.services.aclose()
+
+
+async def test_another_page_is_shown_whole_and_the_same_page_as_its_changes(tmp_path, chromium_path):
+    # Two recipes share many lines; sent as differences, the shared ingredients went unread and players took
+    # them as missing. Another path is another page, shown whole; the same recipe's next step is not.
+    full, episodes = build_server(ServerConfig(run_dir=tmp_path))
+    try:
+        started = await full.call_tool("start_episode", {"task_id": TASK, "options": {"structured": "full"}})
+        eid = started.structured_content["episode_id"]
+        await full.call_tool("browser_goto", {"episode_id": eid, "url": "recipes:/recipe/r007?step=1"})
+        other = await full.call_tool("browser_goto", {"episode_id": eid, "url": "recipes:/recipe/r008?step=1"})
+        assert other.structured_content["observation"]["incremental"] is False
+        assert "Accessibility tree (whole page)" in _text(other)
+        step = await full.call_tool("browser_click", {"episode_id": eid, "element": "link 'Next step'"})
+        assert step.structured_content["observation"]["incremental"] is True
+        assert "every line not listed here is as you last read it" in _text(step)
+    finally:
+        await episodes.aclose()
+        await episodes.services.aclose()

@@ -2,7 +2,9 @@
 sent as what changed since the tree the agent last read, when that is clearly shorter than the whole page.
 
 A "Next step" on a recipe, a ticked checkbox or a new search result changes a few lines of a page the agent has
-already read; resending the whole page repeats what it knows. Each hunk names the unchanged line it follows, so
+already read; resending the whole page repeats what it knows. Only the same page is sent this way (the same URL
+path; session.see_tree): another page is sent whole, so lines two pages share are never left for the agent to
+carry over. Each hunk names the unchanged line it follows, so
 the agent can place it; removed lines are counted, not repeated. ``browser_snapshot`` and ``get_observation``
 always send the whole page, so the agent can read it again at any time.
 """

@@ -68,8 +68,9 @@ def build_observation(
         shown = "Marked elements (see the screenshot):\n" + "\n".join(
             f"[{m.id}] {m.role} '{m.name}'" for m in rendered.marks)
     elif changes is not None:  # web_incremental: the page the agent read, changed (incremental.py)
-        shown = (f"Accessibility tree, changes since your last observation ({rendered.lines} lines; "
-                 f"browser_snapshot shows it whole):\n{changes}")
+        shown = (f"Accessibility tree, changes since your last observation of this page ({rendered.lines} lines; "
+                 "every line not listed here is as you last read it; browser_snapshot shows it whole):"
+                 f"\n{changes}")
     else:
         scope = "visible part of the page" if viewport_only else "whole page"
         shown = f"Accessibility tree ({scope}):\n{rendered.text}"
@@ -184,7 +185,7 @@ async def present(session: BrowserSession, tab: Tab, collected: tuple[list[Any],
         lines.append(TabLine(i, t.last_title, url, session.site_url(url), i == session.active))
     body = body or ("marks" if session.mode() == "vision" else "tree")
     tree_lines = rendered.text.splitlines() if body == "tree" else None
-    changes = session.see_tree(tree_lines, incremental)
+    changes = session.see_tree(tree_lines, incremental, tab.page.url)
     return build_observation(tabs=lines, facts=facts, url=tab.page.url, site_url=session.site_url(tab.page.url),
                              rendered=rendered, notices=session.take_notices(), body=body,
                              viewport_only=viewport_only, budget=budget, png=png, changes=changes)

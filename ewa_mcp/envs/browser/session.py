@@ -18,6 +18,7 @@ import asyncio
 import contextlib
 from collections.abc import Iterator
 from typing import Any
+from urllib.parse import urlsplit
 
 from playwright.async_api import Error as PlaywrightError
 
@@ -90,6 +91,7 @@ class BrowserSession:
         self.config = BrowserConfig()
         self.options: dict[str, Any] = {}
         self.seen_tree: list[str] | None = None  # the tree lines of the last observation (incremental.py)
+        self.seen_path: str | None = None  # the URL path of that observation's page
         self.service: BrowserService | None = None
         self.policy: UrlPolicy | None = None
         self.context: Any = None
@@ -117,6 +119,7 @@ class BrowserSession:
         """Settings, browser, sites and URL policy; a context; one tab at the task's start page."""
         self.options = dict(options or {})
         self.seen_tree = None
+        self.seen_path = None
         self.config = self.services.settings.browser  # validated when the settings were loaded
         try:
             for origin in self.config.allow_origins:
@@ -392,15 +395,21 @@ class BrowserSession:
         """The size budget of a web observation: the one asked for, else the episode's option, else the config's."""
         return int(requested or self.options.get("web_max_chars") or self.config.max_chars)
 
-    def see_tree(self, lines: list[str] | None, incremental: bool) -> str | None:
+    def see_tree(self, lines: list[str] | None, incremental: bool, url: str = "") -> str | None:
         """Remember the tree lines an observation shows (None: it shows no tree); return the changes since the
         last tree it showed when the observation may be incremental and the episode asked for that."""
         changes = None
         # On by default: a page after an action does not resend what the agent has already read of it; the option
         # web_incremental false asks for the whole page every time (browser_snapshot and get_observation always are).
-        if incremental and lines is not None and self.options.get("web_incremental") is not False:
+        # Another page (another path: another recipe, article or product) is shown whole: sent as its
+        # differences from the last one, the lines two recipes share went unread and players took them as
+        # missing. The same page after an action or with other parameters (the next step, a new search) is not.
+        path = urlsplit(url).path if url else None
+        same_page = path is not None and path == self.seen_path
+        if incremental and same_page and lines is not None and self.options.get("web_incremental") is not False:
             changes = tree_changes(self.seen_tree, lines)
         self.seen_tree = lines  # what the agent now knows of the page (a marks list shows no tree)
+        self.seen_path = path
         return changes
 
     def viewport_only(self, requested: bool | None = None) -> bool:
