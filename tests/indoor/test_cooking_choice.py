@@ -141,3 +141,17 @@ def test_a_pair_asked_by_a_word_is_told_from_every_recipe_of_the_word(tasks):
     rivals = look_alikes(recipe, catalog, ingredient=by_ingredient.metadata["ingredient"])
     assert recipe["id"] not in {r["id"] for r in rivals}
     assert all(by_ingredient.metadata["ingredient"] in {i["name"] for i in r["ingredients"]} for r in rivals)
+
+
+def test_a_food_cooked_in_two_places_is_cooked_in_each_as_a_reader_says() -> None:
+    # Mozzarella Potato Stack fries its potato in the pan, then warms it in the microwave: "cooks the potato in
+    # a pan on the stove" is true of it, so a step-told task cannot use that statement to rule it out.
+    from ewa_mcp.envs.kitchen.taskgen.cooking import food_treatments, load_catalog, recipe_ops, step_statements
+
+    recipe = load_catalog().by_id["r208"]
+    treated = food_treatments(recipe_ops(recipe))
+    assert treated["Potato"][1] == frozenset({"Pan", "microwave"})
+    statements = dict(step_statements(recipe))
+    assert statements["cooks the potato in a pan on the stove"](treated)
+    assert statements["cooks the potato in the microwave"](treated)
+    assert "keeps the potato raw" not in statements

@@ -49,6 +49,8 @@ def test_every_step_of_every_cooking_task_is_doable_or_marked(tasks):
     for task in tasks:
         recipe = load_catalog().by_id.get(task.metadata["recipe_id"])
         assert KITCHEN_SCOPE in task.intent, task.id
+        # The recipe goal's rule (the last recipe followed to its end is the choice) is stated, never assumed.
+        assert "taken as your choice" in task.intent, task.id
         marked = []
         for number, step in enumerate(recipe["steps"], 1):
             if not step["kitchen"]:

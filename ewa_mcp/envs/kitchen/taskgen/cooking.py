@@ -365,19 +365,21 @@ def word_pairs(recipe: dict[str, Any], catalog: Any) -> list[tuple[str, dict[str
     return []
 
 
-def food_treatments(ops: list[dict[str, Any]]) -> dict[str, tuple[bool, str | None, str | None]]:
-    """Per food the recipe works with: (cut or cracked, where it cooks or None for raw, where it is served)."""
-    out: dict[str, tuple[bool, str | None, str | None]] = {}
+def food_treatments(ops: list[dict[str, Any]]) -> dict[str, tuple[bool, frozenset[str], str | None]]:
+    """Per food the recipe works with: (cut or cracked, every place it cooks, empty for raw, where it is
+    served). Every place, not the last: a potato fried in the pan and then warmed in the microwave is cooked
+    in a pan on the stove, as a reader of its steps would say."""
+    out: dict[str, tuple[bool, frozenset[str], str | None]] = {}
     for op in ops:
         obj = op.get("object", "")
         food = PIECE_SOURCE.get(obj, obj)
         if food not in FOODS:
             continue
-        cut, cook, served = out.get(food, (False, None, None))
+        cut, cook, served = out.get(food, (False, frozenset(), None))
         if op["op"] in ("slice", "crack"):
             cut = True
         elif op["op"] == "cook":
-            cook = op.get("vessel") or op.get("method")
+            cook = cook | {str(op.get("vessel") or op.get("method"))}
         elif op["op"] == "put" and op.get("receptacle") in ("Plate", "Bowl"):
             served = op["receptacle"]
         out[food] = (cut, cook, served)
@@ -403,8 +405,11 @@ def telling_step(recipe: dict[str, Any], catalog: Any) -> str | None:
         theirs = [r.get(food) for r in rivals]
         if any(t is None for t in theirs):
             continue  # a food the look-alike lacks is what an ingredient filter tells apart
-        if all(t[1] != cook for t in theirs if t):
-            return COOKED_IN[cook].format(f=f) if cook in COOKED_IN else f"keeps the {f} raw"
+        for method in sorted(cook):
+            if method in COOKED_IN and all(method not in t[1] for t in theirs if t):
+                return COOKED_IN[method].format(f=f)
+        if not cook and all(t[1] for t in theirs if t):
+            return f"keeps the {f} raw"
         if all(t[0] != cut for t in theirs if t):
             return f"{'cracks' if food == 'Egg' else 'cuts'} the {f}" if cut else f"keeps the {f} whole"
         if served and all(t[2] not in (None, served) for t in theirs if t):
@@ -412,15 +417,15 @@ def telling_step(recipe: dict[str, Any], catalog: Any) -> str | None:
     return None
 
 
-Treatments = dict[str, tuple[bool, str | None, str | None]]  # food_treatments' answer
+Treatments = dict[str, tuple[bool, frozenset[str], str | None]]  # food_treatments' answer
 
 
 def _cooks(food: str, cook: str, t: Treatments) -> bool:
-    return food in t and t[food][1] == cook
+    return food in t and cook in t[food][1]
 
 
 def _raw(food: str, t: Treatments) -> bool:
-    return food not in t or t[food][1] is None
+    return food not in t or not t[food][1]
 
 
 def _cuts(food: str, t: Treatments) -> bool:
@@ -445,9 +450,10 @@ def step_statements(recipe: dict[str, Any]) -> list[tuple[str, Callable[[Treatme
     out: list[tuple[str, Callable[[Treatments], bool]]] = []
     for food, (cut, cook, served) in sorted(food_treatments(recipe_ops(recipe)).items()):
         f = food.lower()
-        if cook in COOKED_IN:
-            out.append((COOKED_IN[cook].format(f=f), functools.partial(_cooks, food, cook)))
-        elif cook is None:
+        for method in sorted(cook):
+            if method in COOKED_IN:
+                out.append((COOKED_IN[method].format(f=f), functools.partial(_cooks, food, method)))
+        if not cook:
             out.append((f"keeps the {f} raw", functools.partial(_raw, food)))
         if cut:
             out.append((f"{'cracks' if food == 'Egg' else 'cuts'} the {f}", functools.partial(_cuts, food)))
@@ -654,6 +660,10 @@ def make_task(recipe: dict[str, Any], scene: str, suffix: str, filters: dict[str
             missing = " and no ".join(buy)
             intent += (f" Your kitchen has no {missing}: order them from the shop for delivery to your kitchen "
                        "first.")
+    # The recipe goal takes the last recipe followed to its last step as the agent's choice (principle 2);
+    # an agent that reads a rival to its end after its own must be told, as the pantry and two-dish forms say.
+    intent += " Follow your recipe on the site to its last step (the last recipe you follow to the end is taken "
+    intent += "as your choice)."
     intent += " " + KITCHEN_SCOPE
     oracle = [*web, call("switch_environment", target="embodied", message=f"cook {recipe['name']}"), *kitchen,
               call("finish_episode")]

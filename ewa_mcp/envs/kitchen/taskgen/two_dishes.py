@@ -73,7 +73,7 @@ def dish_pairs(catalog: Any) -> list[tuple[dict[str, Any], dict[str, Any], str]]
             if len(shared) != 1:
                 continue
             food = shared.pop()
-            if not (t_raw[food][0] and t_cooked[food][0]) or t_raw[food][1] is not None or t_cooked[food][1] is None:
+            if not (t_raw[food][0] and t_cooked[food][0]) or t_raw[food][1] or not t_cooked[food][1]:
                 continue
             if ask_for(cooked, catalog) is None:
                 continue
