@@ -24,11 +24,6 @@ from ewa_mcp.websites.recipes.catalog import load_catalog
 TASKS = Path(__file__).resolve().parents[2] / "tasks"
 
 
-@pytest.fixture(scope="module")
-def hard() -> list:
-    return sorted((t for t in TaskStore([TASKS]).all() if t.domain == "cooking" and t.difficulty == "hard"),
-                  key=lambda t: t.id)
-
 
 @pytest.fixture(scope="module")
 def chosen(hard: list) -> list:

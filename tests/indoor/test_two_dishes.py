@@ -5,11 +5,9 @@ swapped between the dishes each fail one."""
 
 from __future__ import annotations
 
-from pathlib import Path
 
 import pytest
 
-from ewa_mcp.core.taskmodel import TaskStore
 from ewa_mcp.envs.browser.goals import RecipeCompleted, RecipesCompleted
 from ewa_mcp.envs.kitchen.taskgen import two_dishes
 from ewa_mcp.envs.kitchen.taskgen.cooking import KITCHEN_SCOPE
@@ -17,13 +15,7 @@ from ewa_mcp.envs.kitchen.taskgen.outcomes import grade_kitchen
 from ewa_mcp.envs.kitchen.taskgen.recipe_goals import recipe_ops
 from ewa_mcp.websites.recipes.catalog import load_catalog
 
-TASKS = Path(__file__).resolve().parents[2] / "tasks"
 
-
-@pytest.fixture(scope="module")
-def hard() -> list:
-    return sorted((t for t in TaskStore([TASKS]).all() if t.domain == "cooking" and t.difficulty == "hard"),
-                  key=lambda t: t.id)
 
 
 @pytest.fixture(scope="module")

@@ -203,3 +203,16 @@ def main(argv: list[str] | None = None) -> int:
 
 if __name__ == "__main__":
     raise SystemExit(main())
+
+
+def print_audit(audit: Any, domain_tasks: str = "cooking") -> int:
+    """Print a form's audit (``audit(tasks) -> {name: count or list}``) over the released cooking tasks; the
+    ``python -m`` entry of each hard form's generator (two_dishes.py, pantry.py)."""
+    from ewa_mcp.core.paths import tasks_dir
+    from ewa_mcp.core.taskmodel import TaskStore
+
+    tasks = sorted((t for t in TaskStore([tasks_dir()]).all() if t.domain == domain_tasks), key=lambda t: t.id)
+    for key, value in audit(tasks).items():
+        shown = f"{len(value)}  e.g. {value[:5]}" if isinstance(value, list) else value
+        print(f"{key:22} {shown}")
+    return 0

@@ -32,7 +32,7 @@ from ..planner import check_recipe_executable, plan_ops, scene_inventory
 from . import two_dishes
 from .cooking import (KITCHEN_SCOPE, NAME_WORD_MIN_NAMES, NAME_WORD_SKIP, SCENES, kitchen_goals, kitchen_steps,
                       missing_equipment, named_with, needed_foods, step_web_oracle)
-from .outcomes import everything_outcome, grade_kitchen, recipe_outcome
+from .outcomes import everything_outcome, grade_kitchen, print_audit, recipe_outcome
 from .recipe_goals import recipe_ops
 
 SHARE = 4  # one in SHARE of the one-dish hard ids takes this form
@@ -214,14 +214,7 @@ def audit(tasks: list[Any]) -> dict[str, Any]:
 
 def main(argv: list[str] | None = None) -> int:
     """Print the audit over the pantry tasks (``python -m ewa_mcp.envs.kitchen.taskgen.pantry``)."""
-    from ewa_mcp.core.paths import tasks_dir
-    from ewa_mcp.core.taskmodel import TaskStore
-
-    tasks = sorted((t for t in TaskStore([tasks_dir()]).all() if t.domain == "cooking"), key=lambda t: t.id)
-    for key, value in audit(tasks).items():
-        shown = f"{len(value)}  e.g. {value[:5]}" if isinstance(value, list) else value
-        print(f"{key:22} {shown}")
-    return 0
+    return print_audit(audit)
 
 
 if __name__ == "__main__":

@@ -29,7 +29,7 @@ from ..planner import PlanError, _parse_ops, _Planner, scene_inventory
 from . import cooking
 from .cooking import (KITCHEN_SCOPE, SCENES, buy_oracle, constraints_for, delivery_store, food_treatments,
                       hard_ask, kitchen_steps, look_alikes, missing_equipment, needed_foods, recipe_web_oracle, step_web_oracle)
-from .outcomes import everything_outcome, grade_kitchen
+from .outcomes import everything_outcome, grade_kitchen, print_audit
 from .recipe_goals import PIECE_SOURCE, goals_from_ops, recipe_ops, rival_foods
 
 SHARE = 3  # one in SHARE of the cooking-hard ids takes the two-dish form
@@ -325,14 +325,7 @@ def audit(tasks: list[Any]) -> dict[str, Any]:
 
 def main(argv: list[str] | None = None) -> int:
     """Print the audit over the two-dish tasks (``python -m ewa_mcp.envs.kitchen.taskgen.two_dishes``)."""
-    from ewa_mcp.core.paths import tasks_dir
-    from ewa_mcp.core.taskmodel import TaskStore
-
-    tasks = sorted((t for t in TaskStore([tasks_dir()]).all() if t.domain == "cooking"), key=lambda t: t.id)
-    for key, value in audit(tasks).items():
-        shown = f"{len(value)}  e.g. {value[:5]}" if isinstance(value, list) else value
-        print(f"{key:22} {shown}")
-    return 0
+    return print_audit(audit)
 
 
 if __name__ == "__main__":
