@@ -2,8 +2,12 @@
 
 Unlike the paper's reference, the observation shows what an agent needs to act: its pose and
 what it holds, which objects are in reach now, where every object is (inside what), and the
-states that matter (open/closed, on/off, cooked, broken, filled). Contents of closed receptacles
-are listed too, marked closed, as AI2-THOR's metadata lists them.
+states that matter (open/closed, on/off, cooked, broken, filled). It shows what is seen: a closed
+cabinet, drawer or fridge the agent has not seen open this episode shows no contents and is not
+called empty (``Fridge_1 (closed) {not looked inside: open it to see}``; closed cabinets and
+drawers on one "Not looked inside" line), and what it holds is left out of the data, of "In reach"
+and of what a bare type names. Once seen open (opened by the agent, or open in any observation)
+its contents are shown, open or closed again: the agent remembers what it saw.
 """
 
 from __future__ import annotations
@@ -38,7 +42,7 @@ def state_tags(session: KitchenSession, obj: dict[str, Any]) -> list[str]:
 def _children(session: KitchenSession) -> dict[str | None, list[str]]:
     children: dict[str | None, list[str]] = {}
     for object_id, obj in session.objects.items():
-        if obj.get("isPickedUp"):
+        if obj.get("isPickedUp") or session.hidden_by(obj) is not None:
             continue
         children.setdefault(session.parent_of(obj), []).append(object_id)
     for ids in children.values():
@@ -54,7 +58,9 @@ def _describe(session: KitchenSession, object_id: str, children: dict[str | None
     if tags:
         text += f" ({', '.join(tags)})"
     inside = children.get(object_id, [])
-    if inside:
+    if session.unlooked(object_id):
+        text += " {not looked inside: open it to see}"
+    elif inside:
         text += " {" + _list(session, inside, children) + "}"
     elif obj.get("receptacle") and obj.get("pickupable"):
         text += " {}"
@@ -76,7 +82,8 @@ def _list(session: KitchenSession, ids: list[str], children: dict[str | None, li
 
     for object_id in ids:
         obj = session.objects[object_id]
-        simple = not children.get(object_id) and not (obj.get("receptacle") and obj.get("pickupable"))
+        simple = (not children.get(object_id) and not (obj.get("receptacle") and obj.get("pickupable"))
+                  and not session.unlooked(object_id))
         key = (obj["objectType"], tuple(state_tags(session, obj))) if simple else None
         if key is not None and key == run_key:
             run.append(object_id)
@@ -140,12 +147,13 @@ def build_observation(session: KitchenSession, mode: str = "text", *, view: str 
     children = _children(session)
     in_reach = sorted(
         (i for i, o in session.objects.items() if o["visible"] and not o["isPickedUp"]
-         and o["objectType"] not in ("Floor", "Sink")),
+         and o["objectType"] not in ("Floor", "Sink") and session.hidden_by(o) is None),
         key=lambda i: (session.objects[i]["distance"], session.handle(i)),
     )
     lines.append("In reach: " + (_reach_line(session, in_reach) or "nothing — teleport to an object"))
     lines.append("Kitchen (nearest first; {…} = contents):")
     empty: list[str] = []
+    unlooked: list[str] = []
     top_level = [i for i in children.get(None, []) if session.objects[i]["objectType"] not in ("StoveKnob", "Sink")]
     top_level.sort(key=lambda i: (session.objects[i]["distance"], session.handle(i)))
     for object_id in top_level:
@@ -153,11 +161,13 @@ def build_observation(session: KitchenSession, mode: str = "text", *, view: str 
         if obj["objectType"] == "Floor" and not children.get(object_id):
             continue
         if not children.get(object_id) and obj["objectType"] not in _APPLIANCES:
-            empty.append(object_id)
+            # a closed cabinet never opened may hold anything: it is not empty as far as the agent knows
+            (unlooked if session.unlooked(object_id) else empty).append(object_id)
             continue
         # An appliance is listed even when it holds nothing; say so, or a closed fridge with no {…} reads as
         # "not looked into" (play-testers opened empty fridges to find out).
-        nothing = " {empty}" if obj.get("receptacle") and not children.get(object_id) else ""
+        nothing = " {empty}" if (obj.get("receptacle") and not children.get(object_id)
+                                 and not session.unlooked(object_id)) else ""
         lines.append(f"- {_describe(session, object_id, children)}{nothing} · {obj['distance']:.1f} m")
     if empty:
         closed = [i for i in empty if session.objects[i].get("openable") and not session.objects[i].get("isOpen")]
@@ -168,6 +178,9 @@ def build_observation(session: KitchenSession, mode: str = "text", *, view: str 
         if opened:
             text += ("; " if closed else "") + _compress(sorted((session.handle(i) for i in opened), key=_handle_key))
         lines.append(text)
+    if unlooked:
+        lines.append("Not looked inside (closed; open one to see what it holds): "
+                     + _compress(sorted((session.handle(i) for i in unlooked), key=_handle_key)))
     data["in_reach"] = [session.handle(i) for i in in_reach]
     data["objects"] = [
         {
@@ -178,8 +191,10 @@ def build_observation(session: KitchenSession, mode: str = "text", *, view: str 
             "distance": round(obj["distance"], 2),
             "visible": obj["visible"],
             "states": state_tags(session, obj),
+            **({"looked_inside": not session.unlooked(object_id)} if obj.get("openable") and obj.get("receptacle")
+               else {}),
         }
-        for object_id, obj in session.objects.items()
+        for object_id, obj in session.objects.items() if session.hidden_by(obj) is None
     ]
     return "\n".join(lines), data
 

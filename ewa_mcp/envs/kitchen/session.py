@@ -99,6 +99,10 @@ class KitchenSession:
         # pieces whose cooking came from the whole food they were cut from (cooked whole, then sliced or
         # cracked): the final state's cookedWhole, so a method goal can tell "crack, then fry" from the reverse
         self.cooked_whole: set[str] = set()
+        # openable receptacles the agent has seen open this episode (it opened them, or they stood open in an
+        # observation): what a closed one holds is shown only once it has been looked into, as a person
+        # remembers what the fridge held after shutting it
+        self.seen_open: set[str] = set()
 
     # ------------------------------------------------------------------ lifecycle
     def reset(self) -> None:
@@ -117,6 +121,7 @@ class KitchenSession:
         self.deliveries.clear()
         self.cooked_by.clear()
         self.cooked_whole.clear()
+        self.seen_open.clear()
         self._events_seen = 0
         self._pending_notes.clear()
         self.last_report = None
@@ -125,6 +130,7 @@ class KitchenSession:
     def _refresh(self, metadata: dict[str, Any]) -> None:
         self.meta = metadata
         self.objects = {o["objectId"]: o for o in metadata["objects"]}
+        self.seen_open.update(i for i, o in self.objects.items() if o.get("openable") and o.get("isOpen"))
         for obj in metadata["objects"]:
             if obj["objectId"] not in self.handles:
                 kind = obj["objectType"]
@@ -159,6 +165,34 @@ class KitchenSession:
         parents = obj.get("parentReceptacles") or []
         return parents[0] if parents else None
 
+    def unlooked(self, object_id: str) -> bool:
+        """Whether ``object_id`` is a closed openable receptacle the agent has not seen open this episode."""
+        obj = self.objects.get(object_id) or {}
+        return bool(obj.get("openable") and obj.get("receptacle") and not obj.get("isOpen")
+                    and object_id not in self.seen_open)
+
+    def hidden_by(self, obj: dict[str, Any]) -> str | None:
+        """The closed, never-opened receptacle that encloses ``obj`` (so the agent cannot know it is there),
+        or None when the agent can see or remembers it."""
+        if obj.get("isPickedUp"):
+            return None
+        stack = list(obj.get("parentReceptacles") or [])
+        visited: set[str] = set()
+        while stack:
+            parent = stack.pop()
+            if parent in visited or parent not in self.objects:
+                continue
+            visited.add(parent)
+            if self.unlooked(parent):
+                return parent
+            stack.extend(self.objects[parent].get("parentReceptacles") or [])
+        return None
+
+    def unlooked_receptacles(self) -> list[str]:
+        """Handles of the closed receptacles not yet looked into (none of them hidden itself), sorted."""
+        ids = [i for i, o in self.objects.items() if self.unlooked(i) and self.hidden_by(o) is None]
+        return sorted((self.handle(i) for i in ids), key=_handle_order)
+
     # ------------------------------------------------------------------ references
     def resolve(self, ref: str, purpose: str) -> tuple[str, list[str]]:
         """(objectId, notes) for an agent's reference; ``purpose`` is "interact" or "teleport"."""
@@ -185,8 +219,8 @@ class KitchenSession:
             raise KitchenActionError(f"{text!r} is not an object type of this kitchen (names are exact AI2-THOR "
                                      f"types such as Apple, Knife, CounterTop).{hint}")
         if handle_match:
-            same = sorted((h for h in self.by_handle.values() if self.objects.get(h, {}).get("objectType") == kind),
-                          key=self.handle)
+            same = sorted((h for h in self.by_handle.values() if self.objects.get(h, {}).get("objectType") == kind
+                           and self.hidden_by(self.objects[h]) is None), key=self.handle)
             listed = ", ".join(self.handle(h) for h in same) or "none"
             raise KitchenActionError(f"there is no {text}; the {kind} objects here are: {listed}")
         return self._resolve_type(kind, purpose)
@@ -415,8 +449,23 @@ class KitchenSession:
     def object_action(self, action: str, ref: str) -> ActionReport:
         """Any AI2-THOR action on one object in reach (OpenObject Fridge_1): resolve, step, report."""
         object_id, notes = self.resolve(ref, "interact")
-        self._step(action, object_id)
+        try:
+            self._step(action, object_id)
+        except KitchenActionError as exc:
+            closed = self._closed_around(self.objects.get(object_id) or {})
+            if closed is None or action in ("OpenObject", "CloseObject") or "closed" in str(exc):
+                raise
+            raise KitchenActionError(f"{exc}. It is inside the closed {self.handle(closed)}: open that first "
+                                     f"(OpenObject {self.handle(closed)}).") from None
         return self._report(action, object_id, notes)
+
+    def _closed_around(self, obj: dict[str, Any]) -> str | None:
+        """The nearest closed openable receptacle that holds ``obj``, if any."""
+        for parent in obj.get("parentReceptacles") or []:
+            container = self.objects.get(parent) or {}
+            if container.get("openable") and not container.get("isOpen"):
+                return parent
+        return None
 
     def pickup(self, ref: str) -> ActionReport:
         return self.object_action("PickupObject", ref)
@@ -493,6 +542,11 @@ class KitchenSession:
             "held": self.held_id,
             "deliveries": [dict(d) for d in self.deliveries],
         }
+
+
+def _handle_order(handle: str) -> tuple[str, int]:
+    kind, _, number = handle.rpartition("_")
+    return (kind, int(number) if number.isdigit() else 0)
 
 
 def _compress(handles: list[str]) -> str:
