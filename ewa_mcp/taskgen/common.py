@@ -5,7 +5,8 @@ from __future__ import annotations
 import hashlib
 import random
 from contextvars import ContextVar
-from typing import Any
+from collections.abc import Callable, Sequence
+from typing import Any, TypeVar
 from urllib.parse import urlencode
 
 from ewa_mcp.core.taskmodel import ToolCall
@@ -72,3 +73,31 @@ def step_budget(domain: str, difficulty: str, oracle_len: int) -> int:
 # How a walk ends, said the same way by every intent that involves one (docs/grading.md, "Stop and finish").
 # The walk ends at the first street_stop, or else when the episode finishes; where the agent stands then is graded.
 WALK_RULE = "Your walk ends where you call street_stop (or finish_episode); be at the destination then."
+
+
+_Item = TypeVar("_Item")
+_Made = TypeVar("_Made")
+
+
+def round_robin(ids: Sequence[str], queues: list[list[_Item]], cap: int,
+                make: Callable[[str, _Item], _Made | None]) -> dict[str, _Made]:
+    """Give each id, in order, what ``make`` builds from the queues taken in turn (each queue's items in
+    order, at most ``cap`` made from one queue), so a hard form spreads its pairs or words over the ids. Stops
+    at the first id no queue can serve: the ids left keep what they had."""
+    made_for: dict[str, _Made] = {}
+    used = [0] * len(queues)
+    turn = 0
+    for task_id in ids:
+        made = None
+        for _ in range(len(queues)):
+            i = turn % len(queues)
+            turn += 1
+            while made is None and queues[i] and used[i] < cap:
+                made = make(task_id, queues[i].pop(0))
+            if made is not None:
+                used[i] += 1
+                break
+        if made is None:
+            break
+        made_for[task_id] = made
+    return made_for

@@ -24,7 +24,7 @@ from typing import Any
 from ewa_mcp.core.taskmodel import StartState, Task
 from ewa_mcp.envs.browser.goals import RecipesCompleted, WebStart
 from ewa_mcp.envs.kitchen.goals import KitchenStart
-from ewa_mcp.taskgen.common import call, rng_for, step_budget
+from ewa_mcp.taskgen.common import call, rng_for, round_robin, step_budget
 from ewa_mcp.websites.recipes.catalog import _tokens as tokens
 from ewa_mcp.websites.recipes.catalog import load_catalog
 
@@ -147,27 +147,18 @@ def with_pantry(tasks: list[Task]) -> list[Task]:
     rng_for("cooking", "pantry").shuffle(lacking)
     chosen = lacking[: len(lacking) // SHARE]
     queues = candidates(catalog)
-    used = Counter[int]()
-    replaced: dict[str, Task] = {}
     seen: set[tuple[str, str]] = set()
-    turn = 0
-    for task_id in chosen:
-        made = None
-        for _ in range(len(queues)):
-            i = turn % len(queues)
-            turn += 1
-            while made is None and queues[i] and used[i] < PER_WORD:
-                word, scene = queues[i].pop(0)
-                made = make_pantry_task(task_id, word, scene, catalog)
-                if made is not None and (made.metadata["recipe_id"], scene) in seen:
-                    made = None  # the same dish in the same kitchen, asked by another word: nothing new
-            if made is not None:
-                used[i] += 1
-                seen.add((made.metadata["recipe_id"], made.metadata["scene"]))
-                break
-        if made is None:
-            break  # no word has a kitchen left: the remaining ids keep their form
-        replaced[task_id] = made
+
+    def make(task_id: str, item: tuple[str, str]) -> Task | None:
+        word, scene = item
+        made = make_pantry_task(task_id, word, scene, catalog)
+        if made is None or (made.metadata["recipe_id"], scene) in seen:
+            return None  # nothing to make, or the same dish in the same kitchen asked by another word
+        seen.add((made.metadata["recipe_id"], scene))
+        return made
+
+    # Words taken round-robin; when no word has a kitchen left, the remaining ids keep their form.
+    replaced = round_robin(chosen, queues, PER_WORD, make)
     return [replaced.get(t.id, t) for t in tasks]
 
 

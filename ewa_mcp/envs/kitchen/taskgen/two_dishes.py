@@ -21,7 +21,7 @@ from typing import Any
 from ewa_mcp.core.taskmodel import DomainGoal, StartState, Task
 from ewa_mcp.envs.browser.goals import OrderPlaced, RecipesCompleted, WebStart
 from ewa_mcp.envs.kitchen.goals import KitchenStart, ObjectIn, ObjectState
-from ewa_mcp.taskgen.common import call, rng_for, step_budget
+from ewa_mcp.taskgen.common import call, rng_for, round_robin, step_budget
 from ewa_mcp.websites.recipes.catalog import load_catalog
 from ewa_mcp.websites.recipes.vocabulary import KITCHEN_PRODUCTS
 
@@ -250,24 +250,14 @@ def with_two_dishes(tasks: list[Task]) -> list[Task]:
         scenes = SCENES[:]
         rng_for("cooking", "two-dishes", raw["id"], cooked["id"]).shuffle(scenes)
         queues.append([(raw, cooked, food, s) for s in scenes])
-    replaced: dict[str, Task] = {}
-    used = {i: 0 for i in range(len(queues))}
-    turn = 0
-    for task_id in chosen:
-        made = None
-        for _ in range(len(queues)):
-            i = turn % len(queues)
-            turn += 1
-            while made is None and queues[i] and used[i] < PER_PAIR:
-                raw, cooked, food, scene = queues[i].pop(0)
-                order = (0, 1) if rng.random() < 0.5 else (1, 0)
-                made = make_two_dish_task(task_id, raw, cooked, food, scene, order)
-            if made is not None:
-                used[i] += 1
-                break
-        if made is None:
-            break  # no pair has a kitchen left: the remaining ids keep the one-dish form
-        replaced[task_id] = made
+
+    def make(task_id: str, item: tuple[dict[str, Any], dict[str, Any], str, str]) -> Task | None:
+        raw, cooked, food, scene = item
+        order = (0, 1) if rng.random() < 0.5 else (1, 0)
+        return make_two_dish_task(task_id, raw, cooked, food, scene, order)
+
+    # When no pair has a kitchen left, the remaining ids keep the one-dish form.
+    replaced = round_robin(chosen, queues, PER_PAIR, make)
     return [replaced.get(t.id, t) for t in tasks]
 
 
