@@ -10,6 +10,8 @@ from collections import Counter
 from itertools import permutations
 from pathlib import Path
 
+import pytest
+
 from ewa_mcp.envs.street.taskgen.navigation import (
     PER_CITY_VIA,
     SHORTEST_END_SHARE,
@@ -76,6 +78,8 @@ def test_six_stops_wherever_the_city_gives_them() -> None:
             assert task["id"].startswith("navigation-via-boston-"), task["id"]
 
 
+# Every one of the 720 orders of every task: a whole-suite check, run by make test-slow.
+@pytest.mark.slow
 def test_the_best_order_is_the_answer_by_a_clear_margin_and_the_shortcuts_are_mostly_wrong() -> None:
     world = get_world()
     tasks = shortest()
@@ -137,6 +141,8 @@ def test_the_best_order_is_the_answer_by_a_clear_margin_and_the_shortcuts_are_mo
     assert len(ends) >= 3, ends
 
 
+# Every one of the 720 orders of every task: a whole-suite check, run by make test-slow.
+@pytest.mark.slow
 def test_only_the_best_order_walked_along_the_map_passes_the_chain() -> None:
     """The generator kept only draws where the map's routes past the stops in any of the 719 other orders
     (119 with five stops, 23 with four) miss the chain; the best order's routes meet it even where a stop is passed early on the way."""
@@ -152,6 +158,8 @@ def test_only_the_best_order_walked_along_the_map_passes_the_chain() -> None:
             assert chain_passes(world, city, answer, nodes) is (list(perm) == answer), (task["id"], perm)
 
 
+# Every one of the 720 orders of every task: a whole-suite check, run by make test-slow.
+@pytest.mark.slow
 def test_the_distances_as_the_map_shows_them_give_the_answer() -> None:
     """What the agent reads is each distance rounded to the metre, one direction per pair (the map's walks are
     the same both ways): summed over the orders, those readings give the task's order by a clear margin."""

@@ -103,7 +103,8 @@ def test_over_the_suite_ordering_everywhere_fails_and_the_asked_orders_pass() ->
             stores.update(g.store_id for g in goals if g.store_id)
             if goals:
                 tasks.append(goals)
-    assert len(tasks) > 450 and len(stores) >= 4  # and 30 split tasks (orders_split): see below
+    # and the split and tour tasks (orders_split): see below and tests/core/test_shopping_tour.py
+    assert len(tasks) > 420 and len(stores) >= 4
     for goals in tasks:
         asked = _events_for(goals)
         assert all(check_order(g, asked, goals).met for g in goals)
@@ -121,8 +122,9 @@ def test_over_the_suite_split_orders_pass_and_ordering_everywhere_fails() -> Non
     from ewa_mcp.envs.street.taskgen.shopping import split_prices
     from ewa_mcp.websites.shop import catalog
 
+    # Two stores each (the tour form's two or three stores: tests/core/test_shopping_tour.py).
     split = [raw for path in sorted((TASKS / "shopping").glob("*.json")) for raw in json.loads(path.read_text())
-             if any(g["kind"] == "orders_split" for g in raw["web_goals"])]
+             if any(g["kind"] == "orders_split" for g in raw["web_goals"]) and raw["metadata"].get("form") == "split"]
     assert len(split) == 42
     every = [s.id for s in catalog.load_stores()]
     for raw in split:
