@@ -6,6 +6,8 @@ import os
 import subprocess
 import sys
 
+import pytest
+
 SCRIPT = """
 import json
 from ewa_mcp.envs.street.taskgen import traveling
@@ -13,6 +15,8 @@ print(json.dumps([t.model_dump(mode="json") for t in traveling.generate()], sort
 """
 
 
+# Two whole traveling generations in fresh processes (a minute since the range's-edge draw): run by make test-slow.
+@pytest.mark.slow
 def test_traveling_generation_does_not_depend_on_hash_seed() -> None:
     runs = []
     for seed in ("1", "4242"):
