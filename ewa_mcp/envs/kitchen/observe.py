@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from .session import HEADINGS, KitchenSession, _compress
+from .session import HEADINGS, KitchenSession, _compress, _handle_order
 
 _APPLIANCES = {"Fridge", "Microwave", "Toaster", "CoffeeMachine", "StoveBurner", "SinkBasin", "GarbageCan"}
 
@@ -174,13 +174,13 @@ def build_observation(session: KitchenSession, mode: str = "text", *, view: str 
         opened = [i for i in empty if i not in closed]
         text = "Empty: "
         if closed:
-            text += _compress(sorted((session.handle(i) for i in closed), key=_handle_key)) + " (closed)"
+            text += _compress(sorted((session.handle(i) for i in closed), key=_handle_order)) + " (closed)"
         if opened:
-            text += ("; " if closed else "") + _compress(sorted((session.handle(i) for i in opened), key=_handle_key))
+            text += ("; " if closed else "") + _compress(sorted((session.handle(i) for i in opened), key=_handle_order))
         lines.append(text)
     if unlooked:
         lines.append("Not looked inside (closed; open one to see what it holds): "
-                     + _compress(sorted((session.handle(i) for i in unlooked), key=_handle_key)))
+                     + _compress(sorted((session.handle(i) for i in unlooked), key=_handle_order)))
     data["in_reach"] = [session.handle(i) for i in in_reach]
     data["objects"] = [
         {
@@ -241,9 +241,4 @@ def _reach_line(session: KitchenSession, in_reach: list[str]) -> str:
     groups: dict[str, list[str]] = {}
     for object_id in in_reach:  # already nearest first
         groups.setdefault(session.objects[object_id]["objectType"], []).append(session.handle(object_id))
-    return ", ".join(_compress(sorted(handles, key=_handle_key)) for handles in groups.values())
-
-
-def _handle_key(handle: str) -> tuple[str, int]:
-    kind, _, number = handle.rpartition("_")
-    return (kind, int(number) if number.isdigit() else 0)
+    return ", ".join(_compress(sorted(handles, key=_handle_order)) for handles in groups.values())
