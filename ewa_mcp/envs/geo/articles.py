@@ -486,11 +486,12 @@ def taken_city_sections(articles_root: Path) -> dict[Path, str]:
 
 def write_taken_sections(articles_root: Path) -> int:
     """Replace (or add) the conventions block at the end of each article taken_city_sections names."""
-    for path, block in taken_city_sections(articles_root).items():
+    blocks = taken_city_sections(articles_root)
+    for path, block in blocks.items():
         text = path.read_text(encoding="utf-8")
         head = text.split("\n" + TAKEN_HEADING, 1)[0].rstrip("\n")
         path.write_text(head + "\n\n" + block, encoding="utf-8")
-    return len(taken_city_sections(articles_root))
+    return len(blocks)
 
 
 if __name__ == "__main__":
