@@ -154,6 +154,30 @@ class Context:
         return self.nearest(start, seller_ids(product, size)) not in (None, store_id)
 
 
+class Legs:
+    """The map's shortest walks between nodes, each worked out once (the generators price every order of every
+    set of stores from several starts and end points, over thousands of drawn lists): ``route`` the walk,
+    ``metres`` its length, ``between`` two stores' length by their ids, ``to_end`` a store's to a place."""
+
+    def __init__(self, ctx: Context) -> None:
+        self.ctx = ctx
+        self._routes: dict[tuple[str, str], Any] = {}
+
+    def route(self, a_node: str, b_node: str) -> Any:
+        if (a_node, b_node) not in self._routes:
+            self._routes[(a_node, b_node)] = self.ctx.world.directions(a_node, b_node)
+        return self._routes[(a_node, b_node)]
+
+    def metres(self, a_node: str, b_node: str) -> float:
+        return float(self.route(a_node, b_node).distance_m)
+
+    def between(self, a: str, b: str) -> float:
+        return self.metres(self.ctx.store_places[a].node, self.ctx.store_places[b].node)
+
+    def to_end(self, end: Any, sid: str) -> float:
+        return self.metres(self.ctx.store_places[sid].node, end.node)
+
+
 def _task(ctx: Context, tid: str, intent: str, start: Any, product: Any, size: str, store_id: str,
           rng: Any, answer: TextAnswer | None = None, walk_first: bool = False,
           difficulty: str = "medium") -> Task:
@@ -570,24 +594,8 @@ def split_tasks(ctx: Context, numbers: list[int]) -> dict[int, Task]:
     most about a third of the tasks. Answers spread over the six pairs."""
     rng = rng_for("shopping", "pair-split")
     store_ids = list(ctx.stores)
-    between_cache: dict[tuple[str, str], float] = {}
-    to_end_cache: dict[tuple[str, str], float] = {}
-    legs_cache: dict[tuple[str, str], Any] = {}
-
-    def leg(a_node: str, b_node: str) -> Any:
-        if (a_node, b_node) not in legs_cache:
-            legs_cache[(a_node, b_node)] = ctx.world.directions(a_node, b_node)
-        return legs_cache[(a_node, b_node)]
-
-    def between(a: str, b: str) -> float:
-        if (a, b) not in between_cache:
-            between_cache[(a, b)] = leg(ctx.store_places[a].node, ctx.store_places[b].node).distance_m
-        return between_cache[(a, b)]
-
-    def to_end(end: Any, sid: str) -> float:
-        if (end.id, sid) not in to_end_cache:
-            to_end_cache[(end.id, sid)] = leg(ctx.store_places[sid].node, end.node).distance_m
-        return to_end_cache[(end.id, sid)]
+    legs = Legs(ctx)
+    leg, between, to_end = legs.route, legs.between, legs.to_end
 
     pairs = {pair_key(a, b): 0 for i, a in enumerate(store_ids) for b in store_ids[i + 1:]}
     lacking, kinds = lacking_sets(ctx, store_ids)
@@ -825,12 +833,7 @@ def store_to_store_tasks(ctx: Context, numbers: list[int], used: dict[str, int] 
     at most about a third of the tasks. Answers spread over the six pairs."""
     rng = rng_for("shopping", "pair-split")
     store_ids = list(ctx.stores)
-    between_cache: dict[tuple[str, str], float] = {}
-
-    def between(a: str, b: str) -> float:
-        if (a, b) not in between_cache:
-            between_cache[(a, b)] = ctx.world.directions(ctx.store_places[a].node, ctx.store_places[b].node).distance_m
-        return between_cache[(a, b)]
+    between = Legs(ctx).between
 
     pairs = {pair_key(a, b): 0 for i, a in enumerate(store_ids) for b in store_ids[i + 1:]}
     lacking, kinds = lacking_sets(ctx, store_ids)
@@ -1209,15 +1212,8 @@ def tour_tasks(ctx: Context, numbers: list[int]) -> dict[int, Task]:
     most about a third of the tasks; answers spread over the sets of stores."""
     rng = rng_for("shopping", "pair-tour")
     store_ids = list(ctx.stores)
-    legs_cache: dict[tuple[str, str], Any] = {}
-
-    def leg(a_node: str, b_node: str) -> Any:
-        if (a_node, b_node) not in legs_cache:
-            legs_cache[(a_node, b_node)] = ctx.world.directions(a_node, b_node)
-        return legs_cache[(a_node, b_node)]
-
-    def leg_m(a_node: str, b_node: str) -> float:
-        return float(leg(a_node, b_node).distance_m)
+    legs = Legs(ctx)
+    leg, leg_m = legs.route, legs.metres
 
     node = {sid: p.node for sid, p in ctx.store_places.items()}
     lacking, kinds = lacking_sets(ctx, store_ids)
