@@ -1,7 +1,9 @@
 """What a cheap walking rule would get over the whole suite (docs/verified.md, "Walking heuristics"), read
 from the task files without playing: the share of tasks where the rule's choice is the task's target.
 
-    nice .venv/bin/python benchmarks/bench_walk_priors.py
+    nice .venv/bin/python benchmarks/bench_walk_priors.py [--tasks DIR]
+
+(``--tasks`` reads another suite, e.g. an older checkout's tasks/, to compare its figures.)
 
 Rules are the walking heuristic agents' choices (ewa_mcp/evaluation/heuristics/walking.py): for a
 hard (several-stop) navigation task the stop each rule ends at, or the whole order it walks; for shopping the store (and product or size) each
@@ -163,22 +165,44 @@ def split_rules(store: TaskStore) -> None:
 
 def end_point_rules(store: TaskStore) -> None:
     """Shopping hard, the split form with an end point E (S, first store, second store, E): how often each
-    shortcut walks the graded order (the pair and its order), over the split form. The shortcuts' picks are
-    the generator's (task metadata); tests/core/test_shopping_constraints.py works them out again from the
-    catalogue and the map and checks they agree."""
+    shortcut walks the graded order (the pair and its order), over the end-point tasks. The shortcuts are the
+    generator's (``split_shortcuts``), worked out again here from each task's prices, walks and the map, so
+    an older suite (``--tasks``) is measured by the same rules; tests/core/test_shopping_constraints.py works
+    them out from the catalogue and checks they agree with the metadata."""
+    from ewa_mcp.envs.street.taskgen.shopping import SPLIT_SHORTCUTS, Context, Legs, pair_key, split_shortcuts
+    from ewa_mcp.geometry import haversine_m
+
     split = [t for t in store.all("shopping") if t.metadata.get("form") == "split"]
     ends = [t for t in split if "end_id" in t.metadata]
+    if not ends:
+        return
+    ctx = Context()
+    legs = Legs(ctx)
     rules: Counter[str] = Counter()
     for t in ends:
-        for rule, pick in t.metadata["shortcuts"].items():
-            rules[rule] += pick == t.metadata["store_pair"]
+        meta, start = t.metadata, t.start.embodied.node
+        end = ctx.world.places[meta["end_id"]]
+        route = {tuple(k.split(">")): m for k, m in meta["walks_m"].items()}
+        within = sorted((r for r in route if meta["pair_costs"][pair_key(*r)] <= meta["budget"]), key=route.__getitem__)
+        from_start = {sid: legs.metres(start, p.node) for sid, p in ctx.store_places.items()}
+        to_end = {sid: legs.to_end(end, sid) for sid in ctx.store_places}
+        way_ends = ctx.world.node(start), ctx.world.node(end.node)
+
+        def line(r: tuple[str, str]) -> float:
+            way = [way_ends[0], *(ctx.world.node(ctx.store_places[x].node) for x in r), way_ends[1]]
+            return sum(haversine_m(a.lat, a.lng, b.lat, b.lng) for a, b in zip(way, way[1:]))
+
+        picks = split_shortcuts(within, meta["pair_costs"], from_start, to_end, legs.between, line)  # type: ignore[arg-type]
+        for rule in SPLIT_SHORTCUTS:
+            rules[rule] += picks[rule] == tuple(meta["store_pair"])
     margins = sorted(t.metadata["margin_m"] for t in ends)
+    pairs = Counter(" & ".join(sorted(t.metadata["store_pair"])) for t in ends)
     print(f"\nshopping hard, split form with an end point ({len(ends)} of {len(split)} split tasks; the answer's "
           f"walk beats the next within the budget by {margins[0]:.0f} to {margins[-1]:.0f} m): the shortcut "
           "walks the graded order")
-    for rule, hits in rules.items():
-        print(f"  {rule}: {hits} of {len(ends)} ({100 * hits / max(len(ends), 1):.0f} %; "
-              f"{100 * hits / max(len(split), 1):.0f} % of the split form)")
+    for rule in SPLIT_SHORTCUTS:
+        print(f"  {rule}: {rules[rule]} of {len(ends)} ({100 * rules[rule] / len(ends):.0f} %)")
+    print("  pairs: " + ", ".join(f"{k} {v}" for k, v in pairs.most_common()))
 
 
 def tour_rules(store: TaskStore) -> None:
@@ -207,7 +231,8 @@ def tour_rules(store: TaskStore) -> None:
 
 
 def main() -> int:
-    store = TaskStore([ROOT / "tasks"])
+    tasks = Path(sys.argv[sys.argv.index("--tasks") + 1]) if "--tasks" in sys.argv else ROOT / "tasks"
+    store = TaskStore([tasks])
     shortest_form(store)
     nav: Counter[str] = Counter()
     for t in store.all("navigation"):

@@ -474,8 +474,14 @@ SPLIT_GAP_M = 40.0  # the answer's walk beats every other walk within the budget
 # other way round) by at least this much: clear on the map's rounding (to 10 m)
 SPLIT_GAP_MAX_M = 150.0  # and by at most this much: close enough that estimating the sums can pick a rival
 SPLIT_END_GAP_M = 60.0  # the end point stands this far or more from both stores of the answer (straight line)
+SPLIT_END_MAX_WALK_M = 4200.0  # with an end point: about 210 moves, as the tour form's (the hard step budget is
+# 320 since that form): walks over the outer stores (CVS, Whole Foods) fit, so the answers are not mostly the
+# central pair (Target and Trader Joe's), which the pair rules (nearest E, stores nearest each other) pick
+SPLIT_END_TASKS = 33  # of the 42 split numbers, those with an end point (the rest end at the second store)
 SPLIT_PAIR_SHARE = 0.36  # no pair of stores the answer of more than this share of split tasks
-SPLIT_SHORTCUT_SHARE = 0.33  # each tempting shortcut picks the answer's walk in at most this share of split tasks
+SPLIT_LAST_SHARE = 0.4  # no store the last before E in more than this share of the end-point tasks
+SPLIT_SHORTCUT_SHARE = 0.33  # each tempting shortcut picks the answer's walk in at most this share of the
+# end-point tasks; the pick takes the lowest cap that still fills SPLIT_END_TASKS (``split_choose``)
 SPLIT_PAIR_GAP_M = 100.0  # without an end point: the target walk beats every other pair within the budget by this
 SPLIT_ORDER_GAP_M = 150.0  # and its own pair visited the other way round by this much: the order is graded
 SPLIT_V9_SHARE = 0.3  # and each of its shortcuts picks the target pair in at most this share of those tasks
@@ -483,7 +489,8 @@ SPLIT_ROUNDS = 8
 SPLIT_SHORTCUTS_RIGHT = 2  # of them, at most this many pick the answer in any one task: the shares stay even
 SPLIT_POOL_DRAWS = 30000  # lists drawn (of four items, then of three) for the pool the suite is picked from
 SPLIT_SHORTCUTS = ("nearest store first", "pair nearest the start", "pair nearest the end", "cheapest pair",
-                   "end point not read", "budget not read")
+                   "end point not read", "budget not read", "straight-line best walk", "stores nearest each other",
+                   "greedy nearest next")
 # Named-stores tasks (the rest are the split form). A store rule picks among the three stores named, right in a
 # third of them by construction (positions and ranks are cycled), and wrong in every split task: 18 of 60 keeps
 # any such rule at 10 % of the hard tasks (the issue's bar for heuristics), and six full cycles of the named
@@ -521,14 +528,18 @@ def split_costs(items: list[tuple[Any, str]], store_ids: list[str]) -> dict[str,
 
 
 def split_shortcuts(within: list[tuple[str, str]], costs: dict[str, float], from_start: dict[str, float],
-                    to_end: dict[str, float], between: Any) -> dict[str, tuple[str, str] | None]:
+                    to_end: dict[str, float], between: Any, line: Any) -> dict[str, tuple[str, str] | None]:
     """The walk (first store, second store) each tempting shortcut picks, or None where it picks none.
     ``within`` is every order of visiting every pair that fills the list within the budget; ``costs`` every
     pair that fills it at all (``pair_key``). The shortcuts: the store nearest the start first, then the
     partner that makes the rest of the walk shortest; the pair nearest the start (sum of the two walks from
     it), nearer store first; the pair nearest the end point, ending at the store nearer it; the cheapest
     pair, in its shorter order; the shortest walk from the start past both stores, the end point not read
-    (the rule before the end point was added); the shortest whole walk over every pair, the budget not read."""
+    (the rule before the end point was added); the shortest whole walk over every pair, the budget not read;
+    the shortest walk within the budget by straight lines (``line``, a walk's straight-line metres S, first,
+    second, E); the pair within the budget whose two stores are nearest each other on foot, in its shorter
+    order; greedy nearest-next (the store nearest the start among those in a pair within the budget, then
+    the partner within the budget nearest it, E not read)."""
     route = {(a, b): from_start[a] + between(a, b) + to_end[b] for k in costs for a, b in
              (k.split("|"), k.split("|")[::-1])}
     pairs = sorted({pair_key(a, b) for a, b in within})
@@ -550,6 +561,10 @@ def split_shortcuts(within: list[tuple[str, str]], costs: dict[str, float], from
     out["cheapest pair"] = best_order(min(costs, key=lambda k: costs[k]))
     out["end point not read"] = min(within, key=lambda r: from_start[r[0]] + between(*r))
     out["budget not read"] = min(route, key=lambda r: route[r])
+    out["straight-line best walk"] = min(within, key=line)
+    out["stores nearest each other"] = best_order(min(pairs, key=lambda k: min(
+        between(*k.split("|")), between(*k.split("|")[::-1]))))
+    out["greedy nearest next"] = min((r for r in within if r[0] == nearest), key=lambda r: between(*r))
     return out
 
 
@@ -608,8 +623,6 @@ def split_tasks(ctx: Context, numbers: list[int]) -> dict[int, Task]:
         near = {sid: ctx.walk(place, sid).distance_m for sid in store_ids}
         by_store.setdefault(min(store_ids, key=near.__getitem__), []).append(place)
         by_pair.setdefault(min(pairs, key=lambda k: sum(near[sid] for sid in k.split("|"))), []).append(place)
-    hits = {name: 0 for name in SPLIT_SHORTCUTS}
-    cap = int(SPLIT_SHORTCUT_SHARE * len(numbers))
     pair_cap = int(SPLIT_PAIR_SHARE * len(numbers))
     want = {"items": SPLIT_ITEMS[0]}
 
@@ -654,7 +667,7 @@ def split_tasks(ctx: Context, numbers: list[int]) -> dict[int, Task]:
                 gap = route[within[1]] - route[target]
                 if len({pair_key(*r) for r in within}) < 2 or not SPLIT_GAP_M <= gap <= SPLIT_GAP_MAX_M:
                     continue  # another pair within the budget, and the next walk close but clear of the answer
-                if route[target] > SPLIT_MAX_WALK_M:
+                if route[target] > SPLIT_END_MAX_WALK_M:
                     continue  # the walk must fit the step budget
                 first, second = target
                 at_end = ctx.world.node(end.node)
@@ -667,7 +680,13 @@ def split_tasks(ctx: Context, numbers: list[int]) -> dict[int, Task]:
                 if _near_in_order(ctx.world, back, ctx.world.node(ctx.store_places[first].node),
                                   ctx.world.node(ctx.store_places[second].node)):
                     continue  # the pair walked the other way round would pass both in the graded order too
-                picked = split_shortcuts(within, costs, from_start, ends, between)
+                s_at = ctx.world.node(start.node)
+
+                def line(r: tuple[str, str]) -> float:
+                    way = [s_at, *(ctx.world.node(ctx.store_places[x].node) for x in r), at_end]
+                    return sum(haversine_m(a.lat, a.lng, b.lat, b.lng) for a, b in zip(way, way[1:]))
+
+                picked = split_shortcuts(within, costs, from_start, ends, between, line)
                 if sum(r == target for r in picked.values()) > SPLIT_SHORTCUTS_RIGHT:
                     continue  # too many shortcuts right at once: their shares could not stay even
                 found.append((items, start, end, target, budget, costs, route, picked, gap))
@@ -681,30 +700,69 @@ def split_tasks(ctx: Context, numbers: list[int]) -> dict[int, Task]:
     for want["items"] in SPLIT_ITEMS:  # four items where the stock allows, else three
         for _ in range(SPLIT_POOL_DRAWS):
             pool.extend(draw() or [])
+    picks = split_choose(pool, numbers, pairs, places)
     out: dict[int, Task] = {}
+    for n, pick in zip(numbers, picks):
+        items, start, end, (first, second), budget, costs, route, shortcuts, gap = pool[pick]
+        out[n] = _split_task(ctx, rng, n, items, start, end, first, second, budget, costs, route, shortcuts, gap)
+    if len(out) < len(numbers):
+        # The numbers past SPLIT_END_TASKS (and any the shares leave open) keep the form without an end
+        # point (the walk ends at the second store).
+        return {**out, **store_to_store_tasks(ctx, numbers[len(out):], pairs, pair_cap)}
+    return out
+
+
+def split_choose(pool: list[Any], numbers: list[int], pairs: dict[str, int], places: list[Any]) -> list[int]:
+    """The pool entries the end-point tasks take (SPLIT_END_TASKS of ``numbers``, fewer where the shares leave
+    none open), in order. Each shortcut walks the answer's graded order in at most ``cap`` of them: the lowest
+    cap (from two up to a third of the tasks) that fills them all, so every rule stays as near chance as the
+    pool allows. ``pairs`` counts each pair's answers (updated here, for the form without an end point)."""
+    want = min(len(numbers), SPLIT_END_TASKS)
+    pair_cap = int(SPLIT_PAIR_SHARE * len(numbers))
+    picked: tuple[list[int], dict[str, int]] = ([], dict(pairs))
+    for cap in range(2, int(SPLIT_SHORTCUT_SHARE * want) + 1):
+        picked = _split_choose_under(pool, want, dict(pairs), pair_cap, cap, places)
+        if len(picked[0]) == want:
+            break
+    pairs.update(picked[1])
+    return picked[0]
+
+
+def _split_choose_under(pool: list[Any], want: int, pairs: dict[str, int], pair_cap: int, cap: int,
+                        places: list[Any]) -> tuple[list[int], dict[str, int]]:
+    """Up to ``want`` pool entries, no shortcut right in more than ``cap`` and no pair the answer of more than
+    ``pair_cap`` (``pairs`` counting): each takes the entry whose right shortcuts have been right least so far
+    (none right first), then the least used last store (the walk's last store before E: Target, the central
+    store, would end most walks), then the least used pair (the pairs with the shortest walks would gather
+    most answers), then the least used end point and start, four items before three."""
+    hits = {name: 0 for name in SPLIT_SHORTCUTS}
+    lasts: dict[str, int] = {}
+    out: list[int] = []
     used: set[int] = set()
     places_used = {p.id: 0 for p in places}
-    for n in numbers:
+
+    def right(i: int) -> list[str]:
+        return [name for name, r in pool[i][7].items() if r == pool[i][3]]
+
+    while len(out) < want:
         open_ = [i for i, c in enumerate(pool) if i not in used and pairs[pair_key(*c[3])] < pair_cap
-                 and all(hits[name] < cap for name, r in c[7].items() if r == c[3])]
+                 and lasts.get(c[3][1], 0) < SPLIT_LAST_SHARE * want and all(hits[name] < cap for name in right(i))]
         if not open_:
-            # The data allows no more walks to an end point within the shares: the rest keep the form
-            # without one (the walk ends at the second store).
-            return {**out, **store_to_store_tasks(ctx, numbers[len(out):], pairs, pair_cap)}
-        pick = min(open_, key=lambda i: (sum(r == pool[i][3] for r in pool[i][7].values()),
+            break
+        pick = min(open_, key=lambda i: (sum(hits[name] + 1 for name in right(i)), lasts.get(pool[i][3][1], 0),
                                          pairs[pair_key(*pool[i][3])], places_used[pool[i][2].id],
                                          places_used[pool[i][1].id], len(pool[i][0]) != SPLIT_ITEMS[0], i))
-        items, start, end, (first, second), budget, costs, route, shortcuts, gap = pool[pick]
-        task = _split_task(ctx, rng, n, items, start, end, first, second, budget, costs, route, shortcuts, gap)
+        items, start, end, (first, second) = pool[pick][:4]
         # the same list from the same start twice would be the same question
         used.update(i for i, c in enumerate(pool) if c[0] == items and c[1] is start)
         pairs[pair_key(first, second)] += 1
+        lasts[second] = lasts.get(second, 0) + 1
         places_used[start.id] += 1  # starts and end points spread too: the same two places share every walk
         places_used[end.id] += 1
-        for name, r in shortcuts.items():
-            hits[name] += r == (first, second)
-        out[n] = task
-    return out
+        for name in right(pick):
+            hits[name] += 1
+        out.append(pick)
+    return out, pairs
 
 
 def place_label(place: Any) -> str:
@@ -1287,15 +1345,28 @@ def tour_tasks(ctx: Context, numbers: list[int]) -> dict[int, Task]:
     pool: list[Any] = []
     for _ in range(TOUR_POOL_DRAWS):
         pool.extend(draw())
+    out: dict[int, Task] = {}
+    for n, pick in zip(numbers, tour_choose(ctx, pool, numbers, sets, places)):
+        out[n] = _tour_task(ctx, rng, n, leg, *pool[pick])
+    return out
+
+
+def tour_choose(ctx: Context, pool: list[Any], numbers: list[int], sets: list[tuple[str, ...]],
+                places: list[Any]) -> list[int]:
+    """The pool entries the tour tasks take, in the order of ``numbers`` (fewer where the shares leave none
+    open): each takes the entry with the fewest shortcuts right, then the least used set of stores, then the
+    least used stores, then the least used start and end point. Target is in nearly every entry (docs/verified.md,
+    "Shopping hard: the split form's shortcuts and the tour's store sets"): a pick that spreads the stores first
+    fills fewer numbers or none better."""
     hits = {name: 0 for name in TOUR_SHORTCUTS}
     cap = int(TOUR_SHARE * len(numbers))
     set_counts = {set_key(c): 0 for c in sets}
     set_cap = int(TOUR_SET_SHARE * len(numbers)) + 1
     store_counts = ctx.store_counts()
     places_used = {p.id: 0 for p in places}
-    out: dict[int, Task] = {}
+    out: list[int] = []
     used: set[int] = set()
-    for n in numbers:
+    for _ in numbers:
         open_ = [i for i, c in enumerate(pool) if i not in used and set_counts[set_key(c[3])] < set_cap
                  and all(hits[name] < cap for name, r in c[8].items() if r == c[3])]
         if not open_:
@@ -1304,7 +1375,7 @@ def tour_tasks(ctx: Context, numbers: list[int]) -> dict[int, Task]:
                                          set_counts[set_key(pool[i][3])], sum(store_counts[s] for s in pool[i][3]),
                                          places_used[pool[i][2].id] + places_used[pool[i][1].id], i))
         c = pool[pick]
-        out[n] = _tour_task(ctx, rng, n, leg, *c)
+        out.append(pick)
         used.update(i for i, d in enumerate(pool) if d[0] == c[0] or (d[1] is c[1] and d[2] is c[2]))
         set_counts[set_key(c[3])] += 1
         for sid in c[3]:
