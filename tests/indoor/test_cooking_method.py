@@ -5,10 +5,12 @@ sliced fails). Every outcome here is a real KitchenSession over the built-in kit
 
 from __future__ import annotations
 
+import pytest
+
 from ewa_mcp.core.paths import tasks_dir
 from ewa_mcp.core.taskmodel import DomainGoal, TaskStore
 from ewa_mcp.envs.kitchen import checks
-from ewa_mcp.envs.kitchen.taskgen.outcomes import audit, grade_kitchen, recipe_outcome
+from ewa_mcp.envs.kitchen.taskgen.outcomes import audit, grade_kitchen, recipe_outcome, union_ops
 from ewa_mcp.envs.kitchen.taskgen.recipe_goals import PIECE_SOURCE, goals_from_ops, recipe_ops
 from ewa_mcp.websites.recipes.catalog import load_catalog
 
@@ -126,7 +128,35 @@ def test_the_audit_on_a_sample_cooking_whole_what_the_recipe_cuts_first_fails():
     oracle passes, and the recipe done with each cut-then-cooked food cooked whole first fails."""
     tasks = sorted((t for t in TaskStore([tasks_dir()]).all()
                     if t.domain == "cooking" and t.metadata.get("form") != "two_dishes"), key=lambda t: t.id)
-    counts = audit(tasks[::20])
+    counts = audit(tasks[::20], over_acting=False)  # the over-acting half: the slow test below
     assert counts["oracle_fails"] == []
     assert counts["whole_first_passes"] == []
     assert counts["whole_first_played"] >= 20
+
+
+@pytest.mark.slow
+def test_over_acting_among_the_candidates_rarely_meets_the_kitchen_goals():
+    """Every 5th single-dish task: doing every cut and cooking of every recipe the intent's name lists, the
+    plate holding what all of them serve (or what any serves), meets the kitchen goals in at most 3 % of
+    the tasks (measured about 2 %: candidates whose kitchen steps differ only where no goal looks)."""
+    tasks = sorted((t for t in TaskStore([tasks_dir()]).all()
+                    if t.domain == "cooking" and t.metadata.get("form") != "two_dishes"), key=lambda t: t.id)[::5]
+    counts = audit(tasks)
+    for plate in ("common", "all"):
+        assert len(counts[f"union_{plate}_passes"]) <= 0.03 * len(tasks), (plate, counts[f"union_{plate}_passes"])
+
+
+def test_union_ops_does_every_cut_and_cooking_and_plates_what_all_serve():
+    toast = [{"op": "slice", "object": "Bread"}, {"op": "cook", "object": "BreadSliced", "method": "toaster"},
+             {"op": "put", "object": "BreadSliced", "receptacle": "Plate"}]
+    pan = [{"op": "slice", "object": "Bread"}, {"op": "cook", "object": "BreadSliced", "method": "stove", "vessel": "Pan"},
+           {"op": "toggle_off", "object": "StoveBurner"}, {"op": "slice", "object": "Tomato"},
+           {"op": "put", "object": "BreadSliced", "receptacle": "Plate"},
+           {"op": "put", "object": "TomatoSliced", "receptacle": "Plate"}]
+    common = union_ops([toast, pan])
+    assert [op["op"] for op in common] == ["slice", "cook", "cook", "slice", "put", "toggle_off"]
+    assert {op.get("method") for op in common if op["op"] == "cook"} == {"toaster", "stove"}
+    assert [op["object"] for op in common if op["op"] == "put"] == ["BreadSliced"]
+    assert [op["object"] for op in union_ops([toast, pan], plate="all") if op["op"] == "put"] == [
+        "BreadSliced", "TomatoSliced"]
+    assert union_ops([toast]) == toast  # no stove used: nothing to turn off

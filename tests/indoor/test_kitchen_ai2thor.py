@@ -20,7 +20,7 @@ from mcp import Client  # noqa: E402
 from ewa_mcp.envs.kitchen.ai2thor_backend import Ai2ThorController  # noqa: E402
 from ewa_mcp.envs.kitchen.env import KitchenEnvironment  # noqa: E402
 from ewa_mcp.envs.kitchen.planner import plan_ops  # noqa: E402
-from ewa_mcp.envs.kitchen.session import KitchenSession  # noqa: E402
+from ewa_mcp.envs.kitchen.session import KitchenActionError, KitchenSession  # noqa: E402
 from ewa_mcp.envs.kitchen.sim import KitchenSim  # noqa: E402
 from ewa_mcp.envs.kitchen.standin import standin_command  # noqa: E402
 from ewa_mcp.server import ServerConfig, build_server  # noqa: E402
@@ -79,6 +79,29 @@ def test_adapter_session_matches_the_simulator():
         # an action ai2thor itself rejects (InvalidArgument raises in the client) comes back as a refusal
         event = adapter.step(action="RotateRight", degrees=45)
         assert not event.metadata["lastActionSuccess"] and "multiple of 90" in event.metadata["errorMessage"]
+    finally:
+        adapter.close()
+
+
+def test_a_hidden_egg_on_the_ai2thor_backend():
+    """The rule that a name does not find or rule out what a closed door hides is the session's, over AI2-THOR
+    metadata: the ai2thor client answers as the simulator does (FloorPlan8's only Egg is in its fridge)."""
+    adapter = Ai2ThorController(standin_command(), "FloorPlan8")
+    try:
+        remote = KitchenSession(adapter, "ai2thor", "FloorPlan8")
+        remote.reset()
+        local = KitchenSession(KitchenSim(None), "sim", "FloorPlan8")
+        local.reset()
+        replies = []
+        for session in (remote, local):
+            with pytest.raises(KitchenActionError) as err:
+                session.teleport("Egg")
+            replies.append(str(err.value))
+        assert replies[0] == replies[1] and replies[0].startswith("No Egg in sight")
+        remote.teleport("Fridge")
+        remote.open("Fridge")
+        remote.pickup("Egg")
+        assert remote.objects[remote.held_id]["objectType"] == "Egg"
     finally:
         adapter.close()
 

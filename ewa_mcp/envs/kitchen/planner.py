@@ -168,6 +168,15 @@ class _Planner:
         obj = self.objects[object_id]
         if obj["visible"]:
             return
+        hider = self.session.hidden_by(obj)
+        if hider is not None:
+            # a name behind a door not yet opened resolves to nothing (session.py): open the door first, as
+            # an agent must, then go to what it held
+            self.reach(hider)
+            self.call("kitchen_open", {"object": self.h(hider)})
+            obj = self.objects[object_id]
+            if obj["visible"]:
+                return
         self.call("kitchen_teleport", {"object": self.h(object_id)})
         for parent in obj.get("parentReceptacles") or []:
             container = self.objects.get(parent)

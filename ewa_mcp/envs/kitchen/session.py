@@ -16,6 +16,13 @@ Object references. An agent may name an object by
     and lists the others). With none in reach, a request fails and lists where each one is,
     except Teleport, which goes to the nearest. A sliced food's type names its pieces
     (``Tomato`` after slicing means a ``TomatoSliced`` piece).
+
+What closed doors hide is not known. An object inside a closed cabinet, drawer, fridge or microwave that
+the agent has not seen open this episode (``hidden_by``) is, to every reference, as if it were not there:
+a bare type neither resolves to it nor is said to be absent because of it, and its handle or objectId
+gets the same reply as one that names nothing ("No Egg in sight ... Closed cabinets, drawers and the
+fridge you have not looked into may hold one"). So a tool call cannot find, or rule out, food the agent
+has not looked for. Once the receptacle has been seen open the object resolves as any other.
 """
 
 from __future__ import annotations
@@ -199,57 +206,77 @@ class KitchenSession:
         text = (ref or "").strip().strip("[]'\"").strip()
         if not text:
             raise KitchenActionError("no object named; give a type (Apple), a handle (Apple_1) or an objectId")
-        if text in self.objects:
+        if text in self.objects and self.known(text):
             return text, []
         object_id = self.by_handle.get(text.lower())
-        if object_id is not None:
-            if object_id not in self.objects:
-                raise KitchenActionError(
-                    f"{self.handles[object_id]} no longer exists (it was sliced or cracked into pieces)"
-                )
+        if object_id is not None and object_id not in self.objects:
+            raise KitchenActionError(
+                f"{self.handles[object_id]} no longer exists (it was sliced or cracked into pieces)"
+            )
+        if object_id is not None and self.known(object_id):
             return object_id, []
-        if "|" in text:
-            raise KitchenActionError(f"no object has the id {text!r}; use a handle from the observation, such as "
-                                     f"{self._examples()}")
+        if "|" in text:  # an id that names nothing, or something behind a door not yet opened: one reply
+            raise KitchenActionError(f"no object in sight has the id {text!r}; use a handle from the observation, "
+                                     f"such as {self._examples()}")
         handle_match = _HANDLE.match(text)
         kind = canonical_type(handle_match.group(1) if handle_match else text)
-        if kind is None:
+        if kind is None:  # no kitchen has such a type: saying so tells nothing about this kitchen
             hints = similar_types(text)
             hint = f" Did you mean {' or '.join(hints)}?" if hints else ""
             raise KitchenActionError(f"{text!r} is not an object type of this kitchen (names are exact AI2-THOR "
                                      f"types such as Apple, Knife, CounterTop).{hint}")
         if handle_match:
             same = sorted((h for h in self.by_handle.values() if self.objects.get(h, {}).get("objectType") == kind
-                           and self.hidden_by(self.objects[h]) is None), key=self.handle)
+                           and self.known(h)), key=self.handle)
             listed = ", ".join(self.handle(h) for h in same) or "none"
-            raise KitchenActionError(f"there is no {text}; the {kind} objects here are: {listed}")
+            raise KitchenActionError(f"no {text} in sight; the {kind} objects you have seen are: {listed}."
+                                     f"{self._unlooked_hint('more')}")
         return self._resolve_type(kind, purpose)
+
+    def known(self, object_id: str) -> bool:
+        """Whether the agent may know ``object_id`` is there: it exists and no closed receptacle it has not
+        seen open encloses it."""
+        obj = self.objects.get(object_id)
+        return obj is not None and self.hidden_by(obj) is None
+
+    def _unlooked_hint(self, what: str) -> str:
+        """Where an object not yet seen may be: the closed receptacles not looked into (the observation lists
+        them, so naming them tells nothing new), or nothing when every one has been looked into."""
+        if not self.unlooked_receptacles():
+            return ""
+        return (f" Closed cabinets, drawers and the fridge you have not looked into may hold {what}: "
+                "open them with kitchen_open (OpenObject) to see.")
 
     def _missing_hint(self, kind: str) -> str:
         """What to do about a type the kitchen lacks: buy it (only what the shop sells), or use a stand-in
         that is here; otherwise nothing to suggest."""
         if kind in SHOP_SOLD_TYPES:
             return " It can be bought on the shopping site; deliveries arrive on a CounterTop."
-        here = [t for t in STAND_INS.get(kind, ()) if any(o["objectType"] == t for o in self.objects.values())]
+        here = [t for t in STAND_INS.get(kind, ())
+                if any(o["objectType"] == t and self.known(i) for i, o in self.objects.items())]
         if here:
             return f" Use {' or '.join(f'a {t}' for t in here)} instead."
         return " The shop does not sell it."
 
     def _examples(self) -> str:
-        names = [self.handle(i) for i, o in self.objects.items() if o["pickupable"]][:3]
+        names = [self.handle(i) for i, o in self.objects.items() if o["pickupable"] and self.known(i)][:3]
         return ", ".join(names) or "CounterTop_1"
 
     def _resolve_type(self, kind: str, purpose: str) -> tuple[str, list[str]]:
         held = self.held_id
-        candidates = [o for o in self.objects.values() if o["objectType"] == kind]
+        # only what the agent may know is there: food behind a door it has not opened is neither found nor
+        # ruled out, so the reply below is the same whether or not some lies hidden
+        seen = [o for i, o in self.objects.items() if self.known(i)]
+        candidates = [o for o in seen if o["objectType"] == kind]
         notes: list[str] = []
         if not candidates and kind in PIECE_FOR:
-            pieces = [o for o in self.objects.values() if o["objectType"] == PIECE_FOR[kind]]
+            pieces = [o for o in seen if o["objectType"] == PIECE_FOR[kind]]
             if pieces:
                 candidates = pieces
                 notes.append(f"{kind} is cut into {PIECE_FOR[kind]} pieces; using one of them.")
         if not candidates:
-            raise KitchenActionError(f"there is no {kind} in this kitchen.{self._missing_hint(kind)}")
+            raise KitchenActionError(f"No {kind} in sight: you have seen none in this kitchen."
+                                     f"{self._unlooked_hint('one')}{self._missing_hint(kind)}")
         if purpose == "teleport":
             candidates = [o for o in candidates if o["objectId"] != held and not o["isPickedUp"]]
             if not candidates:

@@ -42,11 +42,12 @@ async def _stop(env: Any) -> Observation:
 ACTIONS = [
     ToolAction(
         "street_observe", "Look around in the street", "look",
-        "Look around in the street: your street and heading, the neighbouring panorama nodes (each with a "
-        "direction label that is unique here, absolute and relative heading, distance, street name), what is right "
-        "here, and a description of four views (front/right/back/left, or north/east/south/west with "
-        "frame='absolute'); distances are from where you stand now. View images too when the episode's observation "
-        "option is vision or both. Says 'Walk stopped at ...' once the walk is over. Counts as a step, like every call.",
+        "Look around in the street: the neighbouring panorama nodes (each with a direction label that is unique "
+        "here, absolute and relative heading and distance) and four views (front/right/back/left, or "
+        "north/east/south/west with frame='absolute'); distances are from where you stand now. Text mode adds your "
+        "street, each neighbour's street, what is right here and a description of each view; vision mode gives the "
+        "four view images instead (street names are on the signs in them). Says 'Walk stopped at ...' once the walk "
+        "is over. Counts as a step, like every call.",
         _observe, {"frame": Param(Frame, "relative")}),
     ToolAction(
         "street_move", "Walk to a neighbouring node", "act",

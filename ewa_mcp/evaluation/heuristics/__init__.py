@@ -12,7 +12,7 @@ from typing import Any
 
 # The agents by name, known without importing them (the command line lists them at start-up).
 NAMES = ("prior", "geo-lexical", "wiki-search", "order-everywhere", "first-listed", "cook-everything", "look-alike",
-         "first-recipe", "directions-walker", "step-limit-store", "nearest-store", "cheapest-store", "stop-elimination")
+         "first-recipe", "cook-union", "directions-walker", "step-limit-store", "nearest-store", "cheapest-store", "stop-elimination")
 
 
 def heuristic_agent(name: str) -> Any:

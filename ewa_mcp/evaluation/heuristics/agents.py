@@ -420,7 +420,31 @@ class FirstRecipeAgent:
         await finish(s)
 
 
+class CookUnionAgent:
+    """Over-acting among look-alikes: open the last step of every recipe the intent's name matches, order the
+    missing foods, then do every cut and cooking any of them does and plate only what all of them serve
+    (outcomes.union_ops). Passes only where the goals ask for nothing that tells the recipes apart."""
+
+    name = "cook-union"
+
+    async def play(self, s: Session) -> None:
+        from ...envs.kitchen.taskgen.outcomes import kitchen_calls, union_ops
+        from ...envs.kitchen.taskgen.recipe_goals import recipe_ops
+
+        intent, recipes = cooking_task(s)
+        if not recipes:
+            return await finish(s)
+        for listed in recipes:
+            await open_last_step(s, listed)
+        missing = missing_foods(intent)
+        await order_missing(s, missing)
+        scene = await enter_kitchen(s)
+        if scene is not None:
+            await run_calls(s, kitchen_calls(scene, union_ops([recipe_ops(r) for r in recipes]), missing))
+        await finish(s)
+
+
 # The agents of this module; table.py lists them with the walking agents (walking.py builds on the helpers
 # here, so the table lives above both).
 AGENTS = (PriorAgent, GeoLexicalAgent, WikiSearchAgent, OrderEverywhereAgent, FirstListedAgent,
-          CookEverythingAgent, LookAlikeAgent, FirstRecipeAgent)
+          CookEverythingAgent, LookAlikeAgent, FirstRecipeAgent, CookUnionAgent)

@@ -81,6 +81,24 @@ def everything_ops(foods: list[str]) -> list[dict[str, Any]]:
     return ops
 
 
+def union_ops(candidates: list[list[dict[str, Any]]], plate: str = "common") -> list[dict[str, Any]]:
+    """Over-acting among look-alikes: every cut and every cooking any candidate recipe does (a food two of
+    them cook in two places is cooked in both), then the pieces on the plate (``plate="common"``: only those
+    every candidate serves; ``"all"``: those any serves), then the stove off. What an agent does that cannot
+    tell the candidates apart and hopes the grader only asks for what they share."""
+    work: list[dict[str, Any]] = []
+    puts: list[list[dict[str, Any]]] = []
+    for ops in candidates:
+        puts.append([op for op in ops if op["op"] == "put"])
+        for op in ops:
+            if op["op"] not in ("put", "toggle_off") and op not in work:
+                work.append(dict(op))
+    served = ([op for op in puts[0] if all(op in other for other in puts[1:])] if plate == "common"
+              else [op for i, ops in enumerate(puts) for op in ops if op not in [o for p in puts[:i] for o in p]])
+    stove = any(op["op"] == "cook" and op.get("method") == "stove" for op in work)
+    return work + [dict(op) for op in served] + ([{"op": "toggle_off", "object": "StoveBurner"}] if stove else [])
+
+
 def whole_first_ops(ops: list[dict[str, Any]]) -> list[dict[str, Any]] | None:
     """The recipe done the careless way: every food it cuts (cracks) and then cooks is cooked whole first
     and cut afterwards (the whole egg into the hot pan, cracked once cooked). None when it cooks no pieces."""
@@ -122,13 +140,14 @@ def grade_kitchen(goals: list[Any], state: dict[str, Any]) -> list[ConditionResu
     return results
 
 
-def audit(tasks: list[Any], fresh_goals: bool = False) -> dict[str, Any]:
+def audit(tasks: list[Any], fresh_goals: bool = False, over_acting: bool = True) -> dict[str, Any]:
     """For each cooking task: does the oracle's outcome meet every kitchen goal, and do the look-alike's,
-    doing everything and cooking whole what the recipe cuts first each fail at least one? ``fresh_goals``
+    doing everything, cooking whole what the recipe cuts first and (``over_acting``) doing what every
+    listed candidate does (union_ops, the plate common or full) each fail at least one? ``fresh_goals``
     grades the goals the generator would write now instead of the task file's."""
     from ewa_mcp.websites.recipes.catalog import load_catalog
 
-    from .cooking import kitchen_goals
+    from .cooking import kitchen_goals, made_with, named_with
     from .recipe_goals import recipe_ops
 
     catalog = load_catalog()
@@ -136,7 +155,7 @@ def audit(tasks: list[Any], fresh_goals: bool = False) -> dict[str, Any]:
     counts: dict[str, Any] = {"tasks": 0, "oracle_fails": [], "lookalike_tasks": 0, "lookalike_passes": [], "lookalike_not_doable": 0,
               "lookalike_same_kitchen": 0,
               "everything_passes": [], "whole_first_played": 0, "whole_first_not_doable": 0,
-              "whole_first_passes": []}
+              "whole_first_passes": [], "union_common_passes": [], "union_all_passes": []}
     for task in tasks:
         meta = task.metadata
         if meta.get("form") == "two_dishes":
@@ -167,6 +186,14 @@ def audit(tasks: list[Any], fresh_goals: bool = False) -> dict[str, Any]:
         everything = everything_outcome(scene, delivered)
         if everything is not None and all(r.met for r in grade_kitchen(goals, everything)):
             counts["everything_passes"].append(task.id)
+        word, ingredient = meta.get("name_word"), meta.get("ingredient")
+        listed = (named_with(word.lower(), catalog) if word else made_with(ingredient, catalog) if ingredient
+                  else [r for r in catalog.recipes if r["name"] == recipe["name"]])
+        if over_acting and len({tuple(map(str, recipe_ops(r))) for r in listed}) > 1:
+            for plate in ("common", "all"):
+                over = _run(scene, union_ops([recipe_ops(r) for r in listed], plate), delivered, stop_on_error=False)
+                if over is not None and all(r.met for r in grade_kitchen(goals, over)):
+                    counts[f"union_{plate}_passes"].append(task.id)
         careless = whole_first_ops(recipe_ops(recipe))
         if careless is not None:
             state = recipe_outcome(scene, careless, delivered)
