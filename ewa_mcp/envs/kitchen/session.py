@@ -251,12 +251,16 @@ class KitchenSession:
         """What to do about a type the kitchen lacks: buy it (only what the shop sells), or use a stand-in
         that is here; otherwise nothing to suggest."""
         if kind in SHOP_SOLD_TYPES:
-            return " It can be bought on the shopping site; deliveries arrive on a CounterTop."
-        here = [t for t in STAND_INS.get(kind, ())
-                if any(o["objectType"] == t and self.known(i) for i, o in self.objects.items())]
-        if here:
-            return f" Use {' or '.join(f'a {t}' for t in here)} instead."
-        return " The shop does not sell it."
+            advice = "it can be bought on the shopping site; deliveries arrive on a CounterTop."
+        else:
+            here = [t for t in STAND_INS.get(kind, ())
+                    if any(o["objectType"] == t and self.known(i) for i, o in self.objects.items())]
+            if not here:
+                return " The shop does not sell it."
+            advice = f"use {' or '.join(f'a {t}' for t in here)} instead."
+        # While doors stay unopened the kitchen may still hold one: the advice is then said as a fallback
+        # (a plain "Use a Pan instead" read as "there is no Pot" and sent a player to the wrong vessel).
+        return f" If none turns up, {advice}" if self.unlooked_receptacles() else f" {advice[0].upper()}{advice[1:]}"
 
     def _examples(self) -> str:
         names = [self.handle(i) for i, o in self.objects.items() if o["pickupable"] and self.known(i)][:3]
@@ -298,6 +302,8 @@ class KitchenSession:
         candidates.sort(key=lambda o: (o["distance"], self._number(o["objectId"])))
         chosen = candidates[0]["objectId"]
         others = ", ".join(self.handle(o["objectId"]) for o in candidates[1:6])
+        if len(candidates) > 6:  # a short list must not read as the whole one
+            others += f" and {len(candidates) - 6} more"
         scope = "" if purpose == "teleport" else " in reach"
         notes.append(f"{kind} means {self.handle(chosen)}, the nearest{scope} (others: {others}); "
                      "name a handle to choose.")
