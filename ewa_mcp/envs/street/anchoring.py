@@ -42,6 +42,9 @@ def label_fits(graph: CityGraph, label: str, node: int) -> bool:
     """Whether a corner label describes this node: its corner within the arrival radius, or (a block
     label, "A between B & C") the node on A between the two corners."""
     streets, block = label_streets(graph, label)
+    if not streets and graph.node_streets[node]:
+        # A place inside a park is addressed by the park ("Point State Park"): its node is on the park's paths.
+        return all(label in s and s != label for s in graph.node_streets[node])
     if block and len(streets) == 3:
         ends = [streets[0] & streets[k] for k in (1, 2)]
         if node not in streets[0] or not all(ends):

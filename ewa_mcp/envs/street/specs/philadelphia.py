@@ -14,11 +14,14 @@ from .base import CitySpec, FitPoint, FittedGrid, Way, polyline
 EAST_WEST = {  # name -> y (blocks north of Market)
     "Spring Garden Street": 5.3, "Callowhill Street": 4.0, "Vine Street": 3.0, "Race Street": 2.0,
     "Arch Street": 1.0, "Market Street": 0.0, "Chestnut Street": -1.0, "Sansom Street": -1.5,
-    "Walnut Street": -2.0, "Locust Street": -2.8, "Spruce Street": -3.6, "Pine Street": -4.6,
-    "Lombard Street": -5.6, "South Street": -6.6,
+    "Walnut Street": -2.0, "Locust Street": -2.8, "Spruce Street": -3.6, "Pine Street": -4.05,
+    "Lombard Street": -4.5, "South Street": -5.05,
 }
+# South of Spruce the blocks are short: Pine, Lombard and South lie about half a block apart, not one.
+# South Street passes Jim's (4th St) and the Magic Gardens (10th St) and Lombard-South station sits
+# across Broad between the two; at whole-block spacing South Street stood ~300 m south of them.
 JFK_Y = 0.5
-NORTH, SOUTH = 5.3, -6.6
+NORTH, SOUTH = 5.3, -5.05
 
 
 def _ordinal(n: int) -> str:

@@ -28,6 +28,13 @@ FIT_POINTS = [
 ]
 LIBERTY = [(40.44140, -80.00850), (40.44290, -79.99891), (40.44470, -79.99250), (40.44560, -79.99050)]
 POINT_FOUNTAIN = (40.44185, -80.01210)
+BLOCK_HOUSE = (40.4411, -80.0103)  # the Fort Pitt Block House, on the lawn between the two promenades
+
+
+def _at_lng(a: LatLng, b: LatLng, lng: float) -> LatLng:
+    """The point of the straight line a-b at this longitude."""
+    f = (lng - a[1]) / (b[1] - a[1])
+    return round(a[0] + f * (b[0] - a[0]), 6), lng
 UPPER_STREETS = {  # name -> metres along Liberty Avenue from its west end
     "Stanwix Street": None, "6th Street": None, "7th Street": 940.0, "8th Street": 1030.0,
     "9th Street": 1120.0, "10th Street": 1230.0, "11th Street": 1400.0,
@@ -114,7 +121,11 @@ def build() -> CitySpec:
             dist = min(range(0, int(total)), key=lambda d: math.dist(along(d)[:2], (ex, ey)))
         ways.append(Way(name, [offset(dist, 0.0), offset(dist, DUQUESNE_OFFSET_M)]))
     ways.append(Way("Point State Park Promenade", [LIBERTY[0], POINT_FOUNTAIN]))
-    ways.append(Way("Point State Park Promenade", [grid.latlng(COLUMNS["Commonwealth Place"], 0.0), POINT_FOUNTAIN]))
+    south_start = grid.latlng(COLUMNS["Commonwealth Place"], 0.0)
+    ways.append(Way("Point State Park Promenade", [south_start, POINT_FOUNTAIN]))
+    # A lawn path joins the two promenades past the Block House, so a walk to it need not round the tip.
+    ways.append(Way("Point State Park Promenade", [_at_lng(LIBERTY[0], POINT_FOUNTAIN, BLOCK_HOUSE[1]),
+                                                   _at_lng(south_start, POINT_FOUNTAIN, BLOCK_HOUSE[1])]))
     aliases = {"Fifth Avenue": "5th Avenue", "Sixth Avenue": "6th Avenue", "Seventh Avenue": "7th Avenue",
                "Sixth Street": "6th Street", "Seventh Street": "7th Street"}
     fit = grid.report("lower grid: affine fit on published positions; Liberty polyline; upper grid offset from Liberty")

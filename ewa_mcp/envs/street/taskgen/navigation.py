@@ -325,6 +325,9 @@ def shortcut_orders(world: Any, leg: Any, origin: Any, stops: list[Any], listed:
     (the smaller search done right), the one left appended, or put in at its cheapest place (insertion); greedy
     nearest-next improved by reversing stretches while that shortens it (2-opt). ``leg(a, b)`` is the map's
     walking distance in metres."""
+    # One answer whatever order the stops come in: the searches below keep the first of equal orders, and the
+    # generator (stops as drawn) and a check (stops as listed) must find the same ones.
+    stops = sorted(stops, key=lambda p: p.id)
     start = world.node(origin.node)
 
     def crow(a: Any, b: Any) -> float:
