@@ -218,3 +218,33 @@ def test_generator_derives_ingredients_equipment_and_diet_from_the_steps():
     assert recipe["equipment"] == ["Knife", "Pan", "StoveBurner", "Plate"]
     assert recipe["diet"] == "vegetarian" and recipe["servings"] == 3 and recipe["time_minutes"] == 12
     assert parse_specs(spec)[0].variants[0].difficulty == "simple"
+
+
+def test_a_food_left_in_a_heated_vessel_is_cooked_there_and_the_step_says_so():
+    """The kitchen cooks what can cook in a pan or pot on a lit burner: a recipe that leaves a cookable food
+    in the vessel while it cooks something else there cooks that food too (its own op, so the goals want it
+    cooked) and its kitchen note says so. A play-tester followed 'put the bread in the pot, then poach the
+    egg in the pot' and was failed for serving the bread cooked, when only a fresh slice was raw."""
+    cookable = {"Potato", "PotatoSliced", "BreadSliced", "EggCracked"}
+    checked = 0
+    for recipe in DATA:
+        inside: dict[str, list[str]] = {}
+        cooked: set[str] = set()
+        for step in recipe["steps"]:
+            for op in step["ops"]:
+                if op["op"] == "put":
+                    for held in inside.values():
+                        if op["object"] in held:
+                            held.remove(op["object"])
+                    if op["receptacle"] in ("Pan", "Pot"):
+                        inside.setdefault(op["receptacle"], []).append(op["object"])
+                elif op["op"] == "cook":
+                    cooked.add(op["object"])
+                    for food in inside.get(op.get("vessel", ""), []):
+                        if food in cookable and food != op["object"]:
+                            checked += 1
+                            assert food in cooked, (recipe["id"], food, step["kitchen"])
+                            assert "cook with it" in step["kitchen"] or food in {
+                                o["object"] for s in recipe["steps"] for o in s["ops"] if o["op"] == "cook"
+                                and s is not step}, (recipe["id"], step["kitchen"])
+    assert checked >= 1  # the garlic soup's bread

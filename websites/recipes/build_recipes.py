@@ -31,6 +31,7 @@ from pathlib import Path
 from typing import Any
 
 from .vocabulary import (
+    COOKABLE,
     DIFFICULTIES,
     EQUIPMENT,
     KITCHEN_FOODS,
@@ -306,12 +307,32 @@ def build_recipe(dish: Dish, variant: Variant, recipe_id: str, source: str = "di
     equipment: set[str] = set(variant.extra_equipment)
     minutes = 5
     cooked: dict[str, str] = {}  # piece or food type -> how it was cooked ("fried"), for later placing steps
+    # The kitchen cooks what can cook in a pan or pot on a lit burner: a cookable food the steps leave in the
+    # vessel while they cook something else there is cooked with it, and says so (its own cook op and a
+    # sentence). Tomato slices do not cook (AI2-THOR's cookable types), so they are left as they are.
+    inside: dict[str, list[str]] = {}  # vessel -> foods the steps put there and left
+    cooks_itself = {arg or "BreadSliced" for _, codes, _ in variant.steps for code, arg in codes if code in COOKED_WORD}
     for index, (custom, codes, number) in enumerate(variant.steps, start=1):
         where = f"{source}:{number}"
         ops: list[dict[str, Any]] = []
         texts: list[str] = []
+        along: list[str] = []  # "The bread slices in the pot cook with it."
         for code, arg in codes:
             expanded, vessels = _op_code(code, arg, where)
+            for op in expanded:
+                if op["op"] == "put":
+                    for held in inside.values():
+                        if op["object"] in held:
+                            held.remove(op["object"])
+                    if op["receptacle"] in ("Pan", "Pot"):
+                        inside.setdefault(op["receptacle"], []).append(op["object"])
+                elif op["op"] == "cook" and op.get("vessel") in ("Pan", "Pot"):
+                    for food in inside.get(op["vessel"], []):
+                        if food != op["object"] and food in COOKABLE and food not in cooks_itself and food not in cooked:
+                            ops.append({"op": "cook", "object": food, "method": "stove", "vessel": op["vessel"]})
+                            cooked[food] = COOKED_WORD[code]
+                            noun = SLICE_NOUN.get(food, NOUN.get(food, ""))
+                            along.append(f"The {noun} in the {op['vessel'].lower()} cook with it.")
             ops.extend(expanded)
             equipment |= vessels
             for op in expanded:
@@ -335,6 +356,8 @@ def build_recipe(dish: Dish, variant: Variant, recipe_id: str, source: str = "di
             # "Slice the bread. / Toast it." reads as one instruction: "Slice the bread, then toast it."
             parts = [texts[0].rstrip(".")] + [t[0].lower() + t[1:].rstrip(".") for t in texts[1:]]
             generated = ", then ".join(parts) + "."
+        if along and generated:
+            generated = " ".join([generated, *along])
         text = custom or generated
         if not text:
             raise SpecError(f"{where}: a step needs op codes or text")
