@@ -174,3 +174,28 @@ def test_task_ids_do_not_name_their_recipe(tasks):
         rid = task.metadata["recipe_id"]
         assert re.fullmatch(r"cooking-(cook|buy|hard)-\d{4}", task.id), task.id
         assert rid not in task.id and slugs[rid] not in task.id, task.id
+
+
+def test_a_name_word_is_a_whole_word_of_the_name(every_task):
+    """'The dish whose name has the word X' names a word the reader sees in the target's name (or its simple
+    plural), never a piece of one: an ASCII-only split once made "sti" a word of "Potato Rösti"."""
+    from ewa_mcp.websites.recipes.catalog import _fold, _tokens
+
+    assert _tokens("Potato Rösti") == ["potato", "rosti"] and _tokens("Smørrebrød") == ["smorrebrod"]
+    checked = 0
+    for task in every_task:
+        word = task.metadata.get("name_word")
+        if not word or task.domain != "cooking":
+            continue
+        names = _tokens(_fold(task.metadata["recipe_name"]))
+        assert any(w in (word, word + "s", word + "es") or word in (w + "s", w + "es") for w in names), (
+            task.id, word, task.metadata["recipe_name"])
+        checked += 1
+    assert checked > 800
+
+
+def test_the_search_folds_accents():
+    from ewa_mcp.websites.recipes.catalog import Filters, load_catalog
+
+    names = {r["name"] for r in load_catalog().search(Filters(q="rosti"))}
+    assert "Potato Rösti" in names and names == {r["name"] for r in load_catalog().search(Filters(q="Rösti"))}

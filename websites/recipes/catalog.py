@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import re
+import unicodedata
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
@@ -94,8 +95,8 @@ class Catalog:
         self.ingredients = [k for k in KITCHEN_FOODS if k in names] + sorted(names - set(KITCHEN_FOODS))
         self._index = {
             r["id"]: {
-                "name": r["name"].lower(),
-                "text": " ".join([r["name"], r["cuisine"]] + [i["name"] for i in r["ingredients"]]).lower(),
+                "name": _fold(r["name"]),
+                "text": _fold(" ".join([r["name"], r["cuisine"]] + [i["name"] for i in r["ingredients"]])),
                 "ingredients": {i["name"] for i in r["ingredients"]},
                 "equipment": set(r["equipment"]),
             }
@@ -105,7 +106,7 @@ class Catalog:
     # ------------------------------------------------------------ queries
     def search(self, filters: Filters) -> list[dict[str, Any]]:
         tokens = _tokens(filters.q)
-        phrase = " ".join(filters.q.lower().split())
+        phrase = " ".join(_fold(filters.q).split())
         ranked: list[tuple[int, str, str, dict[str, Any]]] = []
         for recipe in self.recipes:
             entry = self._index[recipe["id"]]
@@ -198,8 +199,15 @@ def _choose(key: str, value: str, options: list[str]) -> str:
     raise QueryError(f"Unknown {key} {shown!r}. Use one of: {', '.join(options)} (or leave it empty).")
 
 
+def _fold(text: str) -> str:
+    """Lower case without accents, so "Rösti" and "rosti" are one word (and "ö" never splits it in two:
+    an ASCII-only split once made "sti" a word of "Potato Rösti")."""
+    decomposed = unicodedata.normalize("NFKD", text.lower().replace("ø", "o").replace("ß", "ss"))
+    return "".join(c for c in decomposed if not unicodedata.combining(c))
+
+
 def _tokens(q: str) -> list[str]:
-    return re.findall(r"[a-z0-9]+", q.lower())
+    return re.findall(r"[^\W_]+", _fold(q))
 
 
 def _token_in(token: str, text: str) -> bool:

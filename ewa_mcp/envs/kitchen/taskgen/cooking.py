@@ -27,6 +27,7 @@ from ewa_mcp.core.taskmodel import StartState, Task
 from ewa_mcp.envs.browser.goals import OrderPlaced, RecipeCompleted, WebStart
 from ewa_mcp.envs.kitchen.goals import KitchenStart
 from ewa_mcp.websites.recipes.catalog import Filters, load_catalog
+from ewa_mcp.websites.recipes.catalog import _fold as fold
 from ewa_mcp.websites.recipes.catalog import _token_in as token_in
 from ewa_mcp.websites.recipes.catalog import _tokens as tokens
 from ewa_mcp.websites.shop import catalog as shop_catalog
@@ -88,7 +89,7 @@ def _filters(q: str, filters: dict[str, Any]) -> Filters:
 
 def named_with(word: str, catalog: Any, filters: dict[str, Any] | None = None) -> list[dict[str, Any]]:
     """The recipes a search for ``word`` (with the filters) lists whose name has the word, in listed order."""
-    return [r for r in catalog.search(_filters(word, filters or {})) if token_in(word, r["name"].lower())]
+    return [r for r in catalog.search(_filters(word, filters or {})) if token_in(word, fold(r["name"]))]
 
 
 def _one_else_two(options: list[tuple[str, dict[str, Any]]], lists: Callable[[dict[str, Any]], list[dict[str, Any]]],
