@@ -228,23 +228,13 @@ def test_a_food_left_in_a_heated_vessel_is_cooked_there_and_the_step_says_so():
     cookable = {"Potato", "PotatoSliced", "BreadSliced", "EggCracked"}
     checked = 0
     for recipe in DATA:
-        inside: dict[str, list[str]] = {}
-        cooked: set[str] = set()
-        for step in recipe["steps"]:
-            for op in step["ops"]:
-                if op["op"] == "put":
-                    for held in inside.values():
-                        if op["object"] in held:
-                            held.remove(op["object"])
-                    if op["receptacle"] in ("Pan", "Pot"):
-                        inside.setdefault(op["receptacle"], []).append(op["object"])
-                elif op["op"] == "cook":
-                    cooked.add(op["object"])
-                    for food in inside.get(op.get("vessel", ""), []):
-                        if food in cookable and food != op["object"]:
-                            checked += 1
-                            assert food in cooked, (recipe["id"], food, step["kitchen"])
-                            assert "cook with it" in step["kitchen"] or food in {
-                                o["object"] for s in recipe["steps"] for o in s["ops"] if o["op"] == "cook"
-                                and s is not step}, (recipe["id"], step["kitchen"])
+        ops = [(step, op) for step in recipe["steps"] for op in step["ops"]]
+        for at, food, vessel in build_recipes.left_in_heat([op for _, op in ops]):
+            if food not in cookable:
+                continue
+            checked += 1
+            earlier = [(step, op) for step, op in ops[:at] if op["op"] == "cook" and op["object"] == food]
+            assert earlier, (recipe["id"], food, vessel)
+            step = ops[at][0]
+            assert earlier[-1][0] is not step or "cook with it" in step["kitchen"], (recipe["id"], step["kitchen"])
     assert checked >= 1  # the garlic soup's bread

@@ -127,6 +127,23 @@ def _op_code(code: str, arg: str | None, where: str) -> tuple[list[dict[str, Any
                     "bowl, pan, pot, counter, chill, fetch, stoveon, stoveoff, or ': text' for a plain step")
 
 
+def left_in_heat(ops: list[dict[str, Any]]) -> list[tuple[int, str, str]]:
+    """(index of a stove cook op in a pan or pot, a food the ops put in that vessel earlier and left there,
+    the vessel): what the heat of that op cooks besides its own object."""
+    inside: dict[str, list[str]] = {}
+    found: list[tuple[int, str, str]] = []
+    for at, op in enumerate(ops):
+        if op["op"] == "put":
+            for held in inside.values():
+                if op["object"] in held:
+                    held.remove(op["object"])
+            if op["receptacle"] in ("Pan", "Pot"):
+                inside.setdefault(op["receptacle"], []).append(op["object"])
+        elif op["op"] == "cook" and op.get("vessel") in ("Pan", "Pot"):
+            found += [(at, food, op["vessel"]) for food in inside.get(op["vessel"], []) if food != op["object"]]
+    return found
+
+
 # Codes that move a food somewhere: their wording names the food with the state the kitchen goal
 # checks there (cooked, cut), so a goal never asks for more than the step says (issue: "the egg" in a
 # bowl must be the fried egg; "some slices" must say that one slice is enough).
@@ -310,7 +327,7 @@ def build_recipe(dish: Dish, variant: Variant, recipe_id: str, source: str = "di
     # The kitchen cooks what can cook in a pan or pot on a lit burner: a cookable food the steps leave in the
     # vessel while they cook something else there is cooked with it, and says so (its own cook op and a
     # sentence). Tomato slices do not cook (AI2-THOR's cookable types), so they are left as they are.
-    inside: dict[str, list[str]] = {}  # vessel -> foods the steps put there and left
+    so_far: list[dict[str, Any]] = []  # every op of the earlier steps and of this one so far
     cooks_itself = {arg or "BreadSliced" for _, codes, _ in variant.steps for code, arg in codes if code in COOKED_WORD}
     for index, (custom, codes, number) in enumerate(variant.steps, start=1):
         where = f"{source}:{number}"
@@ -320,19 +337,15 @@ def build_recipe(dish: Dish, variant: Variant, recipe_id: str, source: str = "di
         for code, arg in codes:
             expanded, vessels = _op_code(code, arg, where)
             for op in expanded:
-                if op["op"] == "put":
-                    for held in inside.values():
-                        if op["object"] in held:
-                            held.remove(op["object"])
-                    if op["receptacle"] in ("Pan", "Pot"):
-                        inside.setdefault(op["receptacle"], []).append(op["object"])
-                elif op["op"] == "cook" and op.get("vessel") in ("Pan", "Pot"):
-                    for food in inside.get(op["vessel"], []):
-                        if food != op["object"] and food in COOKABLE and food not in cooks_itself and food not in cooked:
-                            ops.append({"op": "cook", "object": food, "method": "stove", "vessel": op["vessel"]})
-                            cooked[food] = COOKED_WORD[code]
-                            noun = SLICE_NOUN.get(food, NOUN.get(food, ""))
-                            along.append(f"The {noun} in the {op['vessel'].lower()} cook with it.")
+                heated = [(food, vessel) for at, food, vessel in left_in_heat([*so_far, op]) if at == len(so_far)]
+                for food, vessel in heated:
+                    if food in COOKABLE and food not in cooks_itself and food not in cooked:
+                        extra = {"op": "cook", "object": food, "method": "stove", "vessel": vessel}
+                        ops.append(extra)
+                        so_far.append(extra)
+                        cooked[food] = COOKED_WORD[code]
+                        along.append(f"The {SLICE_NOUN.get(food, NOUN.get(food, ''))} in the {vessel.lower()} cook with it.")
+                so_far.append(op)
             ops.extend(expanded)
             equipment |= vessels
             for op in expanded:

@@ -347,30 +347,49 @@ async def run_calls(s: Session, calls: list[dict[str, Any]]) -> None:
         await s.call(c["tool"], c["args"])
 
 
-class CookEverythingAgent:
+class CookingHeuristic:
+    """What every cooking heuristic does, told apart by what it opens and what it cooks: open the last step
+    of each recipe ``opened`` picks from those the intent's name lists, order the foods the intent names as
+    missing, enter the kitchen, make the calls that carry out ``ops`` there, then finish."""
+
+    name = ""
+
+    def opened(self, recipes: list[dict[str, Any]]) -> list[dict[str, Any]]:
+        return recipes
+
+    def ops(self, recipes: list[dict[str, Any]], scene: str, missing: list[str]) -> list[dict[str, Any]]:
+        raise NotImplementedError
+
+    async def play(self, s: Session) -> None:
+        from ...envs.kitchen.taskgen.outcomes import kitchen_calls
+
+        intent, recipes = cooking_task(s)
+        if not recipes:
+            return await finish(s)
+        for recipe in self.opened(recipes):
+            await open_last_step(s, recipe)
+        missing = missing_foods(intent)
+        await order_missing(s, missing)
+        scene = await enter_kitchen(s)
+        if scene is not None:
+            await run_calls(s, kitchen_calls(scene, self.ops(recipes, scene, missing), missing))
+        await finish(s)
+
+
+class CookEverythingAgent(CookingHeuristic):
     """Doing everything: open the last step of every recipe with the dish's name, order the missing foods,
     then cut (crack) every food, cook every piece (bread in the toaster, the rest in the pan on a lit burner),
     put a piece of each on one plate and turn the stove off. Never reads a constraint."""
 
     name = "cook-everything"
 
-    async def play(self, s: Session) -> None:
-        from ...envs.kitchen.taskgen.outcomes import everything_ops, kitchen_calls, kitchen_foods
+    def ops(self, recipes: list[dict[str, Any]], scene: str, missing: list[str]) -> list[dict[str, Any]]:
+        from ...envs.kitchen.taskgen.outcomes import everything_ops, kitchen_foods
 
-        intent, recipes = cooking_task(s)
-        if not recipes:
-            return await finish(s)
-        for recipe in recipes:
-            await open_last_step(s, recipe)
-        missing = missing_foods(intent)
-        await order_missing(s, missing)
-        scene = await enter_kitchen(s)
-        if scene is not None:
-            await run_calls(s, kitchen_calls(scene, everything_ops(kitchen_foods(scene, missing)), missing))
-        await finish(s)
+        return everything_ops(kitchen_foods(scene, missing))
 
 
-class LookAlikeAgent:
+class LookAlikeAgent(CookingHeuristic):
     """Choosing by name: open the last step of every recipe the site lists with the dish's name (so the
     recipe goal cannot tell), ignore the intent's constraints (diet, equipment, ingredients), and cook
     exactly the first listed one's kitchen steps (the planner's calls) after ordering the missing foods.
@@ -379,69 +398,35 @@ class LookAlikeAgent:
 
     name = "look-alike"
 
-    async def play(self, s: Session) -> None:
-        from ...envs.kitchen.taskgen.outcomes import kitchen_calls
+    def ops(self, recipes: list[dict[str, Any]], scene: str, missing: list[str]) -> list[dict[str, Any]]:
         from ...envs.kitchen.taskgen.recipe_goals import recipe_ops
 
-        intent, recipes = cooking_task(s)
-        if not recipes:
-            return await finish(s)
-        recipe = recipes[0]
-        for listed in recipes:
-            await open_last_step(s, listed)
-        missing = missing_foods(intent)
-        await order_missing(s, missing)
-        scene = await enter_kitchen(s)
-        if scene is not None:
-            await run_calls(s, kitchen_calls(scene, recipe_ops(recipe), missing))
-        await finish(s)
+        return recipe_ops(recipes[0])
 
 
-class FirstRecipeAgent:
+class FirstRecipeAgent(LookAlikeAgent):
     """Choosing by position: open only the first recipe the site lists for the dish's name (or the word the
     intent asks by) and cook it exactly (the planner's calls), the constraints ignored. It passes where the
     target is listed first: a guess, which a choice among two recipes leaves right half the time."""
 
     name = "first-recipe"
 
-    async def play(self, s: Session) -> None:
-        from ...envs.kitchen.taskgen.outcomes import kitchen_calls
-        from ...envs.kitchen.taskgen.recipe_goals import recipe_ops
-
-        intent, recipes = cooking_task(s)
-        if not recipes:
-            return await finish(s)
-        await open_last_step(s, recipes[0])
-        missing = missing_foods(intent)
-        await order_missing(s, missing)
-        scene = await enter_kitchen(s)
-        if scene is not None:
-            await run_calls(s, kitchen_calls(scene, recipe_ops(recipes[0]), missing))
-        await finish(s)
+    def opened(self, recipes: list[dict[str, Any]]) -> list[dict[str, Any]]:
+        return recipes[:1]
 
 
-class CookUnionAgent:
+class CookUnionAgent(CookingHeuristic):
     """Over-acting among look-alikes: open the last step of every recipe the intent's name matches, order the
     missing foods, then do every cut and cooking any of them does and plate only what all of them serve
     (outcomes.union_ops). Passes only where the goals ask for nothing that tells the recipes apart."""
 
     name = "cook-union"
 
-    async def play(self, s: Session) -> None:
-        from ...envs.kitchen.taskgen.outcomes import kitchen_calls, union_ops
+    def ops(self, recipes: list[dict[str, Any]], scene: str, missing: list[str]) -> list[dict[str, Any]]:
+        from ...envs.kitchen.taskgen.outcomes import union_ops
         from ...envs.kitchen.taskgen.recipe_goals import recipe_ops
 
-        intent, recipes = cooking_task(s)
-        if not recipes:
-            return await finish(s)
-        for listed in recipes:
-            await open_last_step(s, listed)
-        missing = missing_foods(intent)
-        await order_missing(s, missing)
-        scene = await enter_kitchen(s)
-        if scene is not None:
-            await run_calls(s, kitchen_calls(scene, union_ops([recipe_ops(r) for r in recipes]), missing))
-        await finish(s)
+        return union_ops([recipe_ops(r) for r in recipes])
 
 
 # The agents of this module; table.py lists them with the walking agents (walking.py builds on the helpers
