@@ -95,7 +95,8 @@ def main() -> None:
             print(f"RGB distance of the drawn front from the stated colour: median {dists[len(dists) // 2]:.0f}, "
                   f"max {dists[-1]:.0f}")
     for pid, dist, problems in off[:args.show]:
-        print(f"  {pid}: {problems[0]}" + (f" (+{len(problems) - 1} more)" if len(problems) > 1 else ""))
+        more = f" (+{len(problems) - 1} more)" if len(problems) > 1 else ""
+        print(f"  {pid}: {problems[0]}{more}" + (f"; RGB distance {dist:.0f}" if dist else ""))
 
 
 if __name__ == "__main__":
