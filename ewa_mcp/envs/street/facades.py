@@ -6,6 +6,7 @@ these and on nothing of each other.
 
 from __future__ import annotations
 
+import math
 import random
 
 from PIL import ImageDraw
@@ -25,6 +26,7 @@ SIDEWALK = (170, 166, 158)
 LANE = (235, 225, 160)
 WALL_TONES = [(150, 98, 80), (178, 140, 110), (120, 110, 104), (196, 180, 150), (140, 120, 100), (110, 84, 72),
               (168, 160, 150), (130, 136, 142)]
+DECOY_RGB = 60.0  # an ordinary front's tone at least this far (RGB distance) from a described wall near by
 
 STYLE_PALETTES = {
     "art deco": ((214, 200, 170), (150, 130, 100)),
@@ -66,11 +68,14 @@ STREET_CAMERA = Camera(width=WIDTH, height=HEIGHT, horizon=HEIGHT * 0.46, eye_he
 
 def draw_facade(draw: ImageDraw.ImageDraw, quad: list[tuple[float, float]], style: str, rng: random.Random,
                 base: tuple[int, int, int] | None = None, floors: int = 6,
-                wall: tuple[int, int, int] | None = None) -> None:
+                wall: tuple[int, int, int] | None = None,
+                avoid: list[tuple[int, int, int]] | tuple[()] = ()) -> None:
     """Fill a facade quadrilateral (bottom-near, top-near, top-far, bottom-far) with a style pattern; ``wall``
-    (the material its description names) overrides the style's wall colour."""
+    (the material its description names) overrides the style's wall colour; a random tone is none near
+    a colour of ``avoid`` (the described places' walls near by: Scene.place_walls)."""
     key = _style_key(style)
-    main, trim = STYLE_PALETTES.get(key, (base or rng.choice(WALL_TONES), (60, 60, 64)))
+    tones = [t for t in WALL_TONES if all(math.dist(t, c) > DECOY_RGB for c in avoid)] or WALL_TONES
+    main, trim = STYLE_PALETTES.get(key, (base or rng.choice(tones), (60, 60, 64)))
     main = wall or main
     draw.polygon(quad, fill=main, outline=trim)
     (bx0, by0), (tx0, ty0), (tx1, ty1), (bx1, by1) = quad

@@ -19,7 +19,6 @@ from ewa_mcp.street_drawing.camera import Camera
 from ewa_mcp.street_drawing.text import bundled_font
 from .scene import (
     LOW_HEIGHT_M,
-    MATERIAL_WORDS,
     OPEN_SPACE_KINDS,
     SIGN_KINDS,
     Frontage,
@@ -30,6 +29,7 @@ from .scene import (
     park_features,
     sign_colour_of,
     stated_low,
+    wall_colour_of,
 )
 from .facades import FACADE_X_M, ROAD_HALF_M, _capped_height, _sign_colour, draw_details, draw_facade
 
@@ -183,7 +183,7 @@ def _facing_front(draw: ImageDraw.ImageDraw, cam: Camera, rng: random.Random, f:
         h = _capped_height(h, cam, None, z, z, windows)
     dh = _detail_h(f, cam, z, h)
     quad = [cam.project(x0, 0, z), cam.project(x0, h, z), cam.project(x1, h, z), cam.project(x1, 0, z)]
-    wall = MATERIAL_WORDS.get(material_of(f.hint))
+    wall = wall_colour_of(f.hint)
     draw_facade(draw, quad, f.style, rng, floors=max(3, int(h / 4)), wall=wall)
     # Its details and sign on the part in sight (a front half off the picture keeps its door in it).
     half_w = cam.width / 2 * z / cam.focal
@@ -213,7 +213,7 @@ def _side_front(draw: ImageDraw.ImageDraw, cam: Camera, rng: random.Random, f: F
         h = _capped_height(h, cam, x, z0, z1, windows)
     dh = _detail_h(f, cam, z0, h)
     quad = [cam.project(x, 0, z0), cam.project(x, h, z0), cam.project(x, h, z1), cam.project(x, 0, z1)]
-    draw_facade(draw, quad, f.style, rng, floors=max(3, int(h / 4)), wall=MATERIAL_WORDS.get(material_of(f.hint)))
+    draw_facade(draw, quad, f.style, rng, floors=max(3, int(h / 4)), wall=wall_colour_of(f.hint))
     low = [cam.project(x, 0, z0), cam.project(x, dh, z0), cam.project(x, dh, z1), cam.project(x, 0, z1)]
     _mark(draw, f, low, cues, dh)
     if f.sign:

@@ -84,6 +84,9 @@ class Scene:
     # The places at this very node whose entrance lies within HERE_HALF_ANGLE of this view: what the text
     # mode's "Right here:" line names, drawn close up facing the camera (describe never reads this).
     here: list[Frontage] = field(default_factory=list)
+    # The wall colours the descriptions of the places near this node give (wall_colour_of): an ordinary
+    # front is drawn in none of them, so no nameless building a step away passes for a described one.
+    place_walls: list[tuple[int, int, int]] = field(default_factory=list)
 
 
 def _style(p: Place) -> str:
@@ -247,6 +250,9 @@ def compute_scene(world: World, graph: CityGraph, i: int, heading: float, label:
         if far:
             elat, elng = p.lat, p.lng
             d = haversine_m(lat0, lng0, elat, elng)
+        wall = None if far or p.kind in OPEN_SPACE_KINDS else wall_colour_of(p.description_hint)
+        if wall is not None and wall not in scene.place_walls:
+            scene.place_walls.append(wall)
         if d < 1.0:
             continue
         rel = angle_diff(bearing_deg(lat0, lng0, elat, elng), heading)
@@ -426,6 +432,44 @@ def material_of(hint: str) -> str:
     text = hint.lower()
     found = [(text.find(w), w) for w in MATERIAL_WORDS if w in text]
     return min(found)[1] if found else ""
+
+
+# The colour words a description puts before the material a front is built of ("rust-brown weathering steel",
+# "red-brick", "white marble", "pink-granite") -> the wall colour: the material's own tone alone drew the
+# rust-brown steel of a tower in the grey of bare steel, so a walker at its node saw a front unlike the one
+# the task describes.
+WALL_COLOUR_WORDS = {
+    "rust-brown": (140, 70, 40), "rust": (146, 74, 42), "blue-green": (70, 130, 140), "brown": (118, 78, 54),
+    "red": (160, 56, 44), "white": (238, 236, 230), "pink": (204, 150, 140), "buff": (214, 190, 150),
+    "orange": (200, 112, 62), "cream": (232, 220, 190), "tan": (200, 170, 130), "grey": (132, 134, 136),
+    "gray": (132, 134, 136), "black": (44, 44, 48), "green": (84, 132, 112), "blue": (92, 132, 172),
+    "bronze": (116, 88, 52), "copper": (176, 102, 62), "gold": (196, 160, 60), "golden": (196, 160, 60),
+    "pale": (222, 216, 202), "dark": (70, 72, 78),
+}
+SHADE_WORDS = {"dark": 0.6, "pale": 1.35}  # before another colour word, they shade it
+WALL_COLOUR_REACH = 3  # words before the material a colour word may stand ("rust-brown weathering steel")
+
+
+@functools.lru_cache(maxsize=4096)
+def wall_colour_of(hint: str) -> tuple[int, int, int] | None:
+    """The colour a place's front is drawn in: the colour its description gives the material it is built of
+    (the last colour word among the few words before it, shaded by a "dark" or "pale" before that), else
+    that material's own tone; None where the description names no material (its style's palette, or a
+    random tone, is drawn)."""
+    material = material_of(hint)
+    if not material:
+        return None
+    text = hint.lower()
+    words = re.findall(r"[a-z]+(?:-[a-z]+)*", text[:text.find(material)])[-WALL_COLOUR_REACH:]
+    named: list[str] = []
+    for w in words:  # a compound ("rust-brown") as a whole where the table has it, else each of its parts
+        named += [w] if w in WALL_COLOUR_WORDS else [q for q in w.split("-") if q in WALL_COLOUR_WORDS]
+    hues = [w for w in named if w not in SHADE_WORDS]
+    if not hues:
+        return WALL_COLOUR_WORDS[named[-1]] if named else MATERIAL_WORDS[material]
+    shade = next((SHADE_WORDS[w] for w in named if w in SHADE_WORDS), 1.0)
+    r, g, b = (min(255, int(c * shade)) for c in WALL_COLOUR_WORDS[hues[-1]])
+    return r, g, b
 
 
 def sign_colour_of(hint: str) -> tuple[int, int, int] | None:

@@ -26,8 +26,8 @@ from ewa_mcp.street_drawing.text import bundled_font
 from .here_view import blocked_near, draw_here, park_here
 from .facades import (AHEAD_END_WALL, FACADE_X_M, LANE, ROAD, ROAD_HALF_M, SIDEWALK, SKY, SKY_TOP, STREET_CAMERA,
                       STYLE_PALETTES, _capped_height, _sign_colour, _style_key, draw_details, draw_facade)
-from .scene import (LOW_HEIGHT_M, MATERIAL_WORDS, OPEN_SPACE_KINDS, SKYLINE_SHOWN, Frontage, Scene, has_look,
-                    material_of, stated_low)
+from .scene import (LOW_HEIGHT_M, OPEN_SPACE_KINDS, SKYLINE_SHOWN, Frontage, Scene, has_look, stated_low,
+                    wall_colour_of)
 
 
 
@@ -121,8 +121,8 @@ def drawn_side(scene: Scene, f: Frontage, far: float) -> str:
 
 
 def _wall(f: Frontage) -> tuple[int, int, int] | None:
-    """The wall colour of the material a place's description names (None: its style's or a random tone)."""
-    return MATERIAL_WORDS.get(material_of(f.hint))
+    """The wall colour its description gives the material it names (None: its style's or a random tone)."""
+    return wall_colour_of(f.hint)
 
 
 def render(scene: Scene, cam: Camera | None = None) -> Image.Image:
@@ -161,7 +161,7 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
                              fill=ROAD)
                 cues.add(f"opening:{o.side}:{round(o.distance_m)}")
         if far < AHEAD_END_WALL and not scene.in_park:
-            _end_wall(draw, cam, far + 12, rng, windows=windows)
+            _end_wall(draw, cam, far + 12, rng, windows=windows, avoid=scene.place_walls)
     elif scene.open_space or park_here(scene):
         cues.add("road_ends")
         _open_ground(draw, cam, rng)
@@ -170,7 +170,7 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
     else:
         cues.add("road_ends")
         facing = next((f for f in scene.frontages if f.side == "ahead" and f.range_m <= 40), None)
-        _end_wall(draw, cam, 14.0, rng, facing, cues)
+        _end_wall(draw, cam, 14.0, rng, facing, cues, avoid=scene.place_walls)
     # Facades, far to near, both sides.
     landmarks: dict[str, list[Frontage]] = {"left": [], "right": []}
     for f in scene.frontages:
@@ -240,7 +240,7 @@ def render_cues(scene: Scene, cam: Camera | None = None) -> tuple[Image.Image, f
             height = _capped_height(height, cam, x, z0, z1, windows)
         quad = [cam.project(x, 0, z0), cam.project(x, height, z0), cam.project(x, height, z1), cam.project(x, 0, z1)]
         draw_facade(draw, quad, lm.style if lm else "", rng, floors=max(3, int(height / 4)),
-                    wall=_wall(lm) if lm else None)
+                    wall=_wall(lm) if lm else None, avoid=scene.place_walls if lm is None else ())
         if lm is not None:
             cues.add(f"facade:{lm.place_id}")
             cues |= {f"detail:{lm.place_id}:{d}" for d in draw_details(draw, quad, lm.hint)}
@@ -301,13 +301,16 @@ def _open_ground(draw: ImageDraw.ImageDraw, cam: Camera, rng: random.Random) -> 
 
 def _end_wall(draw: ImageDraw.ImageDraw, cam: Camera, z: float, rng: random.Random,
               facing: Frontage | None = None, cues: set[str] | None = None,
-              windows: list[tuple[float, float, float]] | None = None) -> None:
-    """The building fronts across the end of the view; the place straight ahead, if any, in its style."""
+              windows: list[tuple[float, float, float]] | None = None,
+              avoid: list[tuple[int, int, int]] | tuple[()] = ()) -> None:
+    """The building fronts across the end of the view; the place straight ahead, if any, in its style and
+    the colour its description gives; otherwise in a tone unlike the described places near by (``avoid``)."""
     height = 28.0
     if windows:
         height = _capped_height(height, cam, None, z, z, windows)
     quad = [cam.project(-60, 0, z), cam.project(-60, height, z), cam.project(60, height, z), cam.project(60, 0, z)]
-    draw_facade(draw, [quad[0], quad[1], quad[2], quad[3]], facing.style if facing else "", rng, floors=7)
+    draw_facade(draw, [quad[0], quad[1], quad[2], quad[3]], facing.style if facing else "", rng, floors=7,
+                wall=_wall(facing) if facing else None, avoid=() if facing else avoid)
     if facing is not None:
         front = [cam.project(-14, 0, z), cam.project(-14, 22, z), cam.project(14, 22, z), cam.project(14, 0, z)]
         drawn = draw_details(draw, front, facing.hint)
