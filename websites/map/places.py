@@ -108,6 +108,12 @@ class WorldAdapter:
                                     f"'350 5th Ave', or an intersection such as '5th Ave & W 34th St'.")
         exact = [p for p in results if p.name.casefold() == text.strip().casefold()]
         structured = [p for p in results if p.kind in STRUCTURED_KINDS]
+        if len(exact) == 1 and exact[0].kind not in STRUCTURED_KINDS and not exact[0].id.startswith("address:"):
+            # "Point State Park" names the park and is the Fort Pitt Block House's address (a building in the
+            # park): both are offered, so the wiki's address of the one inside still finds it.
+            inside = [p for p in self.world.listed_at(text, city) if p.id != exact[0].id and p not in results]
+            if inside:
+                return Resolution(choices=[exact[0], *inside])
         for candidates in (results, exact, structured):
             if len(candidates) == 1:
                 return Resolution(candidates[0])
