@@ -82,6 +82,10 @@ class WorldAdapter:
                     return found
             # "Old South Church (645 Boylston St)", the way task intents and place pages write a place: the name,
             # else the address in brackets, names it.
+            by_name = self.resolve(named.group(1), city)
+            at = [c for c in by_name.choices if c.address.casefold() == named.group(2).strip().casefold()]
+            if len(at) == 1:  # "Point State Park (601 Commonwealth Pl)": of the places the name offers, the one there
+                return Resolution(at[0])
             for part in named.groups():
                 found = self.resolve(part, city)
                 if found.place is not None:
