@@ -86,10 +86,11 @@ class WorldAdapter:
             at = [c for c in by_name.choices if c.address.casefold() == named.group(2).strip().casefold()]
             if len(at) == 1:  # "Point State Park (601 Commonwealth Pl)": of the places the name offers, the one there
                 return Resolution(at[0])
-            for part in named.groups():
-                found = self.resolve(part, city)
-                if found.place is not None:
-                    return found
+            if by_name.place is not None:
+                return by_name
+            found = self.resolve(named.group(2), city)
+            if found.place is not None:
+                return found
         if not results:
             # "6th Ave between W 40th St & W 42nd St", "Broadway & 6th Ave at W 35th St": an address written the
             # way a place's own page writes it (a block or a corner with a cross street), which the street search
